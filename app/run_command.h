@@ -1,0 +1,18 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace sedem::app {
+
+struct RunOptions {
+  std::string scene;
+  std::string out_dir = "out";
+  std::vector<std::string> overrides;
+  bool quiet = false;
+};
+
+// `sedem run`: returns the process exit status.
+int run(const RunOptions& options, int argc, char** argv);
+
+}  // namespace sedem::app

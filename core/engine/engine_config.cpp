@@ -1,0 +1,36 @@
+#include "core/engine/engine_config.h"
+
+#include "core/scene/schema.h"
+
+namespace sedem {
+
+void describe(ForcesConfig& c, Schema& s) {
+  s.flag("forces.weight", &c.weight, "Gravity on every particle.");
+  s.flag("forces.buoyancy", &c.buoyancy, "Hydrostatic force of the fluid on every particle.");
+  s.choice("forces.drag", &c.drag, {"di_felice", "stokes", "off"},
+           "Drag law: Di Felice with local voidage (Eqs. 7-9), plain Stokes (Eq. 11), or none.");
+  s.flag("forces.contact", &c.contact, "Penalty contact between particles and with the walls.");
+  s.number("forces.stiffness_normal", &c.stiffness_normal, "N/m", 1, 1e-6, 1e9,
+           "K_N, normal penalty spring (paper: 1e3).");
+  s.number("forces.stiffness_tangential", &c.stiffness_tangential, "N/m", 1, 1e-6, 1e9,
+           "K_T, tangential penalty spring (paper: 1e3).");
+  s.number("forces.friction", &c.friction, "", 1, 0, 10, "Coulomb friction coefficient mu_c.");
+  s.flag("forces.lubrication", &c.lubrication,
+         "Squeeze-film repulsion between close pairs (Eq. 10).");
+  s.number("forces.lubrication_intensity", &c.lubrication_intensity, "", 1, 0, 1e6,
+           "Intensity of Eq. 10 (paper: 10).");
+  s.number("forces.lubrication_range", &c.lubrication_range, "", 1, 1e-3, 1e6,
+           "Range of Eq. 10, in inverse particle radii (paper: 10).");
+}
+
+void describe(IntegratorConfig& c, Schema& s) {
+  s.choice("integrator.method", &c.method, {"reference", "exponential"},
+           "reference: explicit, the paper's step rule; exponential: exact drag update, large "
+           "stable steps.");
+  s.number("integrator.step_factor", &c.step_factor, "", 1, 1e-6, 1e9,
+           "Time step as a multiple of the smallest response time t_tr (paper: 0.1).");
+  s.number("integrator.max_step_s", &c.max_step, "s", 1, 1e-12, 1e6, "Upper bound on the step.");
+  s.integer("integrator.threads", &c.threads, 0, 1024, "Worker threads; 0 uses every core.");
+}
+
+}  // namespace sedem

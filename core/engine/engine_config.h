@@ -1,0 +1,35 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace sedem {
+
+class Schema;
+
+// Which forces act (Sect. 3, 4.2). Each can be switched off in a scene.
+struct ForcesConfig {
+  bool weight = true;
+  bool buoyancy = true;
+  std::string drag = "di_felice";  // di_felice | stokes | off
+  bool contact = true;
+  double stiffness_normal = 1e3;      // K_N, N/m
+  double stiffness_tangential = 1e3;  // K_T, N/m
+  double friction = 0.5;              // Coulomb mu_c
+  bool lubrication = false;
+  double lubrication_intensity = 10;  // the first 10 of Eq. 10
+  double lubrication_range = 10;      // the second 10 of Eq. 10
+};
+
+// How Eq. 5 is advanced in time (Sect. 4.6).
+struct IntegratorConfig {
+  std::string method = "exponential";  // reference | exponential
+  double step_factor = 0.1;            // reference: dt = factor * min t_tr (paper: 0.1)
+  double max_step = 1.0;               // s, upper bound on any step
+  std::int64_t threads = 0;            // 0: all cores
+};
+
+void describe(ForcesConfig& config, Schema& schema);
+void describe(IntegratorConfig& config, Schema& schema);
+
+}  // namespace sedem

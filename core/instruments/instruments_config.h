@@ -1,0 +1,31 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace sedem {
+
+class Schema;
+
+// The three laboratory tests of Sect. 4.5 and the layered field they read (Eq. 20).
+struct InstrumentsConfig {
+  std::int64_t layers = 4000;  // n_ly
+
+  bool hydrometer = true;
+  std::vector<double> hydrometer_times{120, 300, 900, 1800, 3600, 15000, 86400};  // s
+
+  bool buoyancy = true;
+  double buoyancy_depth_fraction = 0.3;  // sphere centre depth / H
+  double sphere_diameter = 0.025;        // m
+  double sphere_mass = 20e-3;            // kg
+  std::vector<double> buoyancy_times{30, 60, 120, 240, 900, 1800, 3600, 7200, 14400, 28800};
+
+  bool pipette = true;
+  double pipette_depth_fraction = 0.3;
+  double pipette_volume = 35e-6;  // m^3 of the whole cylinder
+  std::vector<double> pipette_times{30, 60, 120, 240, 900, 1800, 3600, 7200, 14400, 28800};
+};
+
+void describe(InstrumentsConfig& config, Schema& schema);
+
+}  // namespace sedem

@@ -1,0 +1,43 @@
+#include "core/scene/scene.h"
+
+namespace sedem {
+
+static void describe(Fluid& f, Schema& s) {
+  s.number("fluid.density", &f.density, "kg/m^3", 1, 500, 2000, "Fluid density (water: 1000).");
+  s.number("fluid.viscosity", &f.viscosity, "Pa*s", 1, 1e-6, 10,
+           "Dynamic viscosity (water at 20 C: 1.0e-3).")
+      .min_exclusive = true;
+  s.number("fluid.gravity", &f.gravity, "m/s^2", 1, 0, 100, "Gravitational acceleration.");
+}
+
+static void describe(Cylinder& c, Schema& s) {
+  s.number("cylinder.height_m", &c.height, "m", 1, 1e-4, 10, "H, height of the suspension.");
+  s.number("cylinder.diameter_m", &c.diameter, "m", 1, 1e-4, 10, "B, inner diameter.");
+  s.number("cylinder.section_fraction", &c.section_fraction, "", 1, 1e-6, 1,
+           "Share of the cylinder the 2D section stands for (two 1-degree wedges: 1/180).");
+}
+
+static void describe(OutputConfig& o, Schema& s) {
+  s.number("output.interval_s", &o.interval, "s", 1, 1e-6, 1e7,
+           "Simulated time between snapshots.");
+  s.flag("output.particles", &o.particles, "Write the particles.pvd series for ParaView.");
+  s.flag("output.frames", &o.frames, "Render a PNG of the column at every snapshot.");
+  s.integer("output.frame_width", &o.frame_width, 16, 8192, "Frame width, pixels.");
+  s.integer("output.frame_height", &o.frame_height, 16, 8192, "Frame height, pixels.");
+}
+
+Schema Scene::schema() {
+  Schema s;
+  s.text("name", &name, "A name for the scene, used in titles and run.json.");
+  s.number("run.end_time_s", &end_time, "s", 1, 0, 1e7, "Simulated duration of the test.");
+  describe(fluid, s);
+  describe(cylinder, s);
+  describe(sample, s);
+  describe(forces, s);
+  describe(integrator, s);
+  describe(instruments, s);
+  describe(output, s);
+  return s;
+}
+
+}  // namespace sedem

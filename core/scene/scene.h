@@ -1,0 +1,43 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/engine/engine_config.h"
+#include "core/instruments/instruments_config.h"
+#include "core/model/cylinder.h"
+#include "core/model/fluid.h"
+#include "core/sample/sample_config.h"
+#include "core/scene/schema.h"
+
+namespace sedem {
+
+// What to write and when.
+struct OutputConfig {
+  double interval = 10.0;  // s between snapshots (particles, fields, frames)
+  bool particles = true;   // particles.pvd series
+  bool frames = true;      // PNG of the column per snapshot
+  std::int64_t frame_width = 360;
+  std::int64_t frame_height = 1200;
+};
+
+// A scene: everything a run needs, validated, in SI units. Defaults are the paper's.
+struct Scene {
+  std::string name = "scene";
+  Fluid fluid;
+  Cylinder cylinder;
+  SampleConfig sample;
+  ForcesConfig forces;
+  IntegratorConfig integrator;
+  InstrumentsConfig instruments;
+  OutputConfig output;
+  double end_time = 60.0;  // s of simulated time
+
+  // The table of every key, bound to this scene's fields. The Scene must outlive it and
+  // must not move while it is in use.
+  Schema schema();
+};
+
+}  // namespace sedem

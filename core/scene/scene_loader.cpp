@@ -1,0 +1,180 @@
+#include "core/scene/scene_loader.h"
+
+#include <algorithm>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+#include "core/scene/scene_checks.h"
+
+namespace sedem {
+namespace {
+
+std::string where(const std::string& source, const toml::node& node) {
+  const auto& region = node.source();
+  std::ostringstream os;
+  os << source;
+  if (region.begin.line > 0 && source != "--set") os << ':' << region.begin.line;
+  return os.str();
+}
+
+std::string node_text(const toml::node& node) {
+  std::ostringstream os;
+  node.visit([&](const auto& v) {
+    if constexpr (toml::is_string<decltype(v)>)
+      os << '"' << v.get() << '"';
+    else
+      os << v;
+  });
+  return os.str();
+}
+
+std::string range_text(const Param& p) {
+  std::ostringstream os;
+  os << (p.min_exclusive ? "(" : "[") << p.min << ", " << p.max << "]";
+  if (!p.unit.empty()) os << ' ' << p.unit;
+  return os.str();
+}
+
+void check_range(const Param& p, double v, const std::string& at, const std::string& shown) {
+  bool low = p.min_exclusive ? !(v > p.min) : !(v >= p.min);
+  if (low || !(v <= p.max))
+    throw SceneError(at + ": " + p.key + " = " + shown +
+                     " is out of range; allowed: " + range_text(p));
+}
+
+std::optional<double> as_number(const toml::node& n) {
+  if (auto f = n.value_exact<double>()) return *f;
+  if (auto i = n.value_exact<std::int64_t>()) return double(*i);
+  return std::nullopt;
+}
+
+void assign(const Param& p, const toml::node& node, const std::string& at) {
+  const std::string shown = node_text(node);
+  auto wrong_type = [&](const char* want) {
+    return SceneError(at + ": " + p.key + " = " + shown + " must be " + want);
+  };
+  std::visit(
+      [&](auto* target) {
+        using T = std::remove_pointer_t<decltype(target)>;
+        if constexpr (std::is_same_v<T, bool>) {
+          auto b = node.value_exact<bool>();
+          if (!b) throw wrong_type("true or false");
+          *target = *b;
+        } else if constexpr (std::is_same_v<T, std::int64_t>) {
+          auto i = node.value_exact<std::int64_t>();
+          if (!i) throw wrong_type("a whole number");
+          check_range(p, double(*i), at, shown);
+          *target = *i;
+        } else if constexpr (std::is_same_v<T, double>) {
+          auto v = as_number(node);
+          if (!v) throw wrong_type("a number");
+          check_range(p, *v, at, shown);
+          *target = *v * p.to_si;
+        } else if constexpr (std::is_same_v<T, std::string>) {
+          auto s = node.value_exact<std::string>();
+          if (!s) throw wrong_type("a string");
+          if (!p.choices.empty() &&
+              std::find(p.choices.begin(), p.choices.end(), *s) == p.choices.end()) {
+            std::string allowed;
+            for (const auto& c : p.choices) allowed += (allowed.empty() ? "" : ", ") + c;
+            throw SceneError(at + ": " + p.key + " = " + shown + " is not one of: " + allowed);
+          }
+          *target = *s;
+        } else {
+          const auto* arr = node.as_array();
+          if (!arr) throw wrong_type("a list of numbers");
+          std::vector<double> values;
+          for (const auto& item : *arr) {
+            auto v = as_number(item);
+            if (!v) throw wrong_type("a list of numbers");
+            check_range(p, *v, at, node_text(item) + " (in " + shown + ")");
+            values.push_back(*v * p.to_si);
+          }
+          *target = std::move(values);
+        }
+      },
+      p.target);
+}
+
+void apply_table(const Schema& schema, const toml::table& table, const std::string& prefix,
+                 const std::string& source) {
+  for (const auto& [k, node] : table) {
+    const std::string key =
+        prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+    if (const auto* sub = node.as_table()) {
+      apply_table(schema, *sub, key, source);
+      continue;
+    }
+    const Param* p = schema.find(key);
+    if (!p)
+      throw SceneError(where(source, node) + ": unknown key '" + key + "'; did you mean '" +
+                       schema.nearest(key) + "'?");
+    assign(*p, node, where(source, node));
+  }
+}
+
+void apply_override(const Schema& schema, const std::string& assignment) {
+  auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw SceneError("--set " + assignment + ": expected key=value");
+  std::string key = assignment.substr(0, eq);
+  std::string value = assignment.substr(eq + 1);
+  const Param* p = schema.find(key);
+  if (!p)
+    throw SceneError("--set: unknown key '" + key + "'; did you mean '" + schema.nearest(key) +
+                     "'?");
+  // A value is read as TOML; a bare word that is not valid TOML is taken as a string, so
+  // that --set integrator.method=reference needs no quotes.
+  toml::table parsed;
+  try {
+    parsed = toml::parse("v = " + value);
+  } catch (const toml::parse_error&) {
+    parsed = toml::table{{"v", value}};
+  }
+  assign(*p, *parsed.get("v"), "--set");
+}
+
+}  // namespace
+
+Scene parse_scene(std::string_view text, const std::string& source_name,
+                  const std::vector<std::string>& overrides) {
+  Scene scene;
+  Schema schema = scene.schema();
+  toml::table table;
+  try {
+    table = toml::parse(text, source_name);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream os;
+    os << source_name << ':' << e.source().begin.line << ": " << e.description();
+    throw SceneError(os.str());
+  }
+  apply_table(schema, table, "", source_name);
+  for (const auto& o : overrides) apply_override(schema, o);
+  check_scene(scene, source_name);
+  return scene;
+}
+
+Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  std::ifstream in(file);
+  if (!in) throw SceneError(file.string() + ": cannot open the scene file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  Scene scene = parse_scene(buffer.str(), file.string(), overrides);
+  return scene;
+}
+
+std::string resolved_toml(Scene& scene) {
+  Schema schema = scene.schema();
+  std::ostringstream os;
+  for (const auto& p : schema.params()) {
+    os << p.key << " = " << format_user_value(p);
+    if (!p.unit.empty()) os << "  # " << p.unit;
+    os << '\n';
+  }
+  return os.str();
+}
+
+}  // namespace sedem

@@ -1,0 +1,29 @@
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/scene/scene.h"
+
+namespace sedem {
+
+// A scene that cannot be used. The message names the file and line (or `--set`), the key,
+// the value and what is allowed; nothing runs on an invalid scene.
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Reads a TOML scene, then applies `overrides` ("key=value", as given to --set), then checks
+// the values against each other. Throws SceneError.
+Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
+Scene parse_scene(std::string_view toml, const std::string& source_name,
+                  const std::vector<std::string>& overrides = {});
+
+// The resolved scene as TOML, every key with its value in user units (for run.json and for
+// checking what a run used).
+std::string resolved_toml(Scene& scene);
+
+}  // namespace sedem

@@ -1,0 +1,56 @@
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace sedem {
+
+// Every scene key in one table: its dotted name, where its value lives, the unit the user
+// writes it in, the factor to SI, its allowed range and a line of documentation. Loading a
+// TOML file, `--set key=value`, the resolved scene in run.json and docs/scenes.md all walk
+// this table, so a key is declared once, next to the struct that holds it.
+struct Param {
+  using Target = std::variant<bool*, std::int64_t*, double*, std::string*, std::vector<double>*>;
+
+  std::string key;
+  Target target;
+  std::string unit;  // as written by the user: "um", "min", "g", "Pa*s"; empty if none
+  double to_si = 1;  // SI value = user value * to_si (numbers and number lists)
+  double min = -std::numeric_limits<double>::infinity();  // in user units, inclusive
+  double max = std::numeric_limits<double>::infinity();
+  bool min_exclusive = false;
+  std::vector<std::string> choices;  // allowed strings; empty: any
+  std::string doc;
+};
+
+class Schema {
+ public:
+  // Numeric keys: range in the user's unit; `to_si` converts to the stored SI value.
+  Param& number(std::string key, double* target, std::string unit, double to_si, double min,
+                double max, std::string doc);
+  Param& integer(std::string key, std::int64_t* target, std::int64_t min, std::int64_t max,
+                 std::string doc);
+  Param& flag(std::string key, bool* target, std::string doc);
+  Param& choice(std::string key, std::string* target, std::vector<std::string> choices,
+                std::string doc);
+  Param& text(std::string key, std::string* target, std::string doc);
+  Param& list(std::string key, std::vector<double>* target, std::string unit, double to_si,
+              double min, double max, std::string doc);
+
+  const std::vector<Param>& params() const { return params_; }
+  const Param* find(const std::string& key) const;
+  // The declared key closest to `key` (edit distance), for "did you mean" messages.
+  std::string nearest(const std::string& key) const;
+
+ private:
+  Param& add(Param p);
+  std::vector<Param> params_;
+};
+
+// A value as the user sees it (user units), for printing and run.json.
+std::string format_user_value(const Param& p);
+
+}  // namespace sedem

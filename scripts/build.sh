@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Configures and builds sedem (Release) in build/. With CI set, warnings are errors.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+werror=OFF
+[[ -n "${CI:-}" ]] && werror=ON
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DSEDEM_WERROR="$werror" >/dev/null
+cmake --build build --parallel "$(nproc)"

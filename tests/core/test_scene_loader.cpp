@@ -1,0 +1,91 @@
+#include <gtest/gtest.h>
+
+#include "core/scene/scene_loader.h"
+
+namespace sedem {
+namespace {
+
+std::string error_of(const std::string& toml, std::vector<std::string> overrides = {}) {
+  try {
+    parse_scene(toml, "bad.toml", overrides);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SceneLoader, DefaultsAreThePapers) {
+  Scene s = parse_scene("", "empty.toml");
+  EXPECT_DOUBLE_EQ(s.fluid.viscosity, 1e-3);
+  EXPECT_DOUBLE_EQ(s.cylinder.height, 0.457);
+  EXPECT_DOUBLE_EQ(s.sample.total_mass, 60e-3);
+  EXPECT_EQ(s.sample.size_count, 220);
+  EXPECT_EQ(s.instruments.layers, 4000);
+}
+
+TEST(SceneLoader, ConvertsUserUnitsToSI) {
+  Scene s = parse_scene(
+      "[sample]\nmass_g = 30\n[sample.grading]\ndiameters_um = [2.5, 70]\n"
+      "percent_finer = [0, 100]\n[instruments.hydrometer]\ntimes_min = [2, 5]\n",
+      "units.toml");
+  EXPECT_DOUBLE_EQ(s.sample.total_mass, 30e-3);
+  EXPECT_DOUBLE_EQ(s.sample.grading.diameters[1], 70e-6);
+  EXPECT_DOUBLE_EQ(s.instruments.hydrometer_times[1], 300.0);
+}
+
+TEST(SceneLoader, OutOfRangeNamesFileLineKeyValueAndRange) {
+  const std::string e = error_of("name = \"x\"\n[fluid]\nviscosity = -1.0\n");
+  EXPECT_NE(e.find("bad.toml:3"), std::string::npos) << e;
+  EXPECT_NE(e.find("fluid.viscosity = -1"), std::string::npos) << e;
+  EXPECT_NE(e.find("(1e-06, 10] Pa*s"), std::string::npos) << e;
+}
+
+TEST(SceneLoader, UnknownKeySuggestsTheNearest) {
+  const std::string e = error_of("[fluid]\nviscosty = 1e-3\n");
+  EXPECT_NE(e.find("unknown key 'fluid.viscosty'"), std::string::npos) << e;
+  EXPECT_NE(e.find("did you mean 'fluid.viscosity'"), std::string::npos) << e;
+}
+
+TEST(SceneLoader, WrongTypeAndChoiceAreRejected) {
+  EXPECT_NE(error_of("[forces]\ncontact = 3\n").find("must be true or false"), std::string::npos);
+  EXPECT_NE(error_of("[forces]\ndrag = \"newton\"\n").find("is not one of: di_felice, stokes, off"),
+            std::string::npos);
+}
+
+TEST(SceneLoader, SetOverridesTheFile) {
+  Scene s = parse_scene("[fluid]\nviscosity = 2e-3\n", "f.toml",
+                        {"fluid.viscosity=1.5e-3", "integrator.method=reference"});
+  EXPECT_DOUBLE_EQ(s.fluid.viscosity, 1.5e-3);
+  EXPECT_EQ(s.integrator.method, "reference");
+  EXPECT_NE(error_of("", {"fluid.viscosity=abc"}).find("--set: fluid.viscosity"),
+            std::string::npos);
+}
+
+TEST(SceneLoader, CrossChecksNameBothKeys) {
+  EXPECT_NE(error_of("[sample]\nparticle_density = 1001\n[fluid]\ndensity = 1500\n")
+                .find("sample.particle_density must exceed fluid.density"),
+            std::string::npos);
+}
+
+TEST(SceneLoader, ResolvedSceneReadsBackTheSame) {
+  Scene s = parse_scene("[sample]\nmass_g = 30\n", "a.toml");
+  std::string text = resolved_toml(s);
+  // The resolved text is flat "key = value" lines: each must be accepted as an override.
+  std::vector<std::string> sets;
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    auto end = text.find('\n', pos);
+    std::string line = text.substr(pos, end - pos);
+    pos = end + 1;
+    auto hash = line.find("  #");
+    if (hash != std::string::npos) line.resize(hash);
+    auto eq = line.find(" = ");
+    sets.push_back(line.substr(0, eq) + "=" + line.substr(eq + 3));
+  }
+  Scene back = parse_scene("", "b.toml", sets);
+  EXPECT_DOUBLE_EQ(back.sample.total_mass, 30e-3);
+  EXPECT_EQ(resolved_toml(back), text);
+}
+
+}  // namespace
+}  // namespace sedem

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <filesystem>
+
+#include "core/engine/engine.h"
+
+namespace sedem::test {
+
+inline std::filesystem::path baseline(const char* name) {
+  return std::filesystem::path(SEDEM_SOURCE_DIR) / "tests" / "baselines" / name;
+}
+inline std::filesystem::path output_dir() {
+  return SEDEM_TEST_OUTPUT;
+}
+
+// A fixed, hand-made snapshot: a 7 x 20 lattice of three sizes.
+inline Snapshot lattice_snapshot() {
+  Snapshot s;
+  s.time = 42.0;
+  auto& p = s.particles;
+  p.resize(140);
+  for (std::size_t i = 0; i < 140; ++i) {
+    p.x[i] = -0.027 + 0.009 * double(i % 7);
+    p.y[i] = 0.02 + 0.02 * double(i / 7);
+    p.vy[i] = -1e-3 * double(i % 3);
+    p.diameter[i] = (i % 3 == 0 ? 5e-6 : i % 3 == 1 ? 20e-6 : 60e-6);
+    p.weight[i] = 1.0 + double(i);
+    p.size_class[i] = std::int32_t(i % 3);
+    p.id[i] = std::uint32_t(i);
+  }
+  return s;
+}
+
+}  // namespace sedem::test
