@@ -1,80 +1,147 @@
 #include "app/run_command.h"
 
 #include <QGuiApplication>
+#include <QThread>
+#include <QTimer>
 
-#include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
-#include <nlohmann/json.hpp>
-
-#include "core/engine/engine.h"
+#include "app/engine_worker.h"
+#include "app/exit_codes.h"
+#include "app/output_observers.h"
+#include "app/progress.h"
+#include "app/run_record.h"
+#include "app/stop_signals.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
-#include "render/column_view.h"
-#include "render/particle_writer.h"
 
 namespace sedem::app {
 namespace fs = std::filesystem;
 
+namespace {
+
+std::vector<double> schedule_of(const std::vector<std::unique_ptr<Observer>>& observers,
+                                double end_time) {
+  std::vector<std::vector<double>> lists{{end_time}};
+  for (const auto& o : observers) lists.push_back(o->wanted_times());
+  std::vector<double> merged = merge_times(lists);
+  std::erase_if(merged, [&](double t) { return t > end_time * (1 + 1e-12); });
+  return merged;
+}
+
+}  // namespace
+
 int run(const RunOptions& options, int argc, char** argv) {
   QGuiApplication qt(argc, argv);
+  qRegisterMetaType<std::shared_ptr<const Snapshot>>();
+
   Scene scene;
+  Sample sample;
   try {
     scene = load_scene(options.scene, options.overrides);
+    sample = build_sample(scene);
   } catch (const SceneError& e) {
     std::cerr << "sedem: invalid scene: " << e.what() << '\n';
-    return 2;
+    return exit_code::invalid_scene;
   }
+
   const fs::path out = options.out_dir;
-  std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec) {
-    std::cerr << "sedem: cannot create the output folder " << out << ": " << ec.message() << '\n';
-    return 3;
+  RunRecord record;
+  record.scene_file = options.scene;
+  record.seed = scene.sample.seed;
+  record.particle_count = sample.particles.size();
+  try {
+    fs::create_directories(out);
+    write_run_record(record, scene, out / "run.json");
+  } catch (const std::exception& e) {
+    std::cerr << "sedem: cannot write to the output folder " << out << ": " << e.what() << '\n';
+    return exit_code::output_unwritable;
   }
 
-  const auto wall_start = std::chrono::steady_clock::now();
-  Sample sample = build_sample(scene);
-  const double rho_p = sample.particle_density;
-  const std::size_t count = sample.particles.size();
   if (!options.quiet)
-    std::printf("sedem: %s, %zu particles in %zu sizes, %.0f s simulated\n", scene.name.c_str(),
-                count, sample.classes.size(), scene.end_time);
+    std::printf("sedem: %s: %zu particles in %zu sizes, %.0f s to simulate, output in %s\n",
+                scene.name.c_str(), sample.particles.size(), sample.classes.size(), scene.end_time,
+                out.c_str());
+
   Engine engine(scene, std::move(sample));
-  render::ParticleSeriesWriter particles(out, rho_p);
-  const int frames = int(std::ceil(scene.end_time / scene.output.interval - 1e-9));
-  for (int k = 0; k <= frames; ++k) {
-    engine.advance_to(std::min(scene.end_time, k * scene.output.interval));
-    const Snapshot snap = engine.snapshot();
-    if (scene.output.particles) particles.write(snap);
-    if (scene.output.frames) {
-      char name[64];
-      std::snprintf(name, sizeof name, "frames/column_%06d.png", k);
-      render::render_column_png(snap, scene.cylinder, scene.name, int(scene.output.frame_width),
-                                int(scene.output.frame_height), out / name);
-    }
-    if (!options.quiet) std::printf("  t = %8.1f s of %.1f s\n", snap.time, scene.end_time);
+  std::vector<std::unique_ptr<Observer>> observers;
+  try {
+    observers = make_observers(scene, out);
+  } catch (const std::exception& e) {
+    std::cerr << "sedem: cannot prepare the outputs in " << out << ": " << e.what() << '\n';
+    return exit_code::output_unwritable;
   }
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
 
-  nlohmann::json info;
-  info["version"] = SEDEM_VERSION;
-  info["scene_file"] = options.scene;
-  info["scene"] = resolved_toml(scene);
-  info["seed"] = scene.sample.seed;
-  info["particle_count"] = count;
-  info["steps"] = engine.stats().steps;
-  info["wall_time_s"] = wall;
-  info["particle_steps_per_s"] = wall > 0 ? engine.stats().particle_steps / wall : 0.0;
-  std::ofstream(out / "run.json") << info.dump(2) << '\n';
-  if (!options.quiet)
-    std::printf("sedem: wrote %s (particles.pvd, frames/*.png, run.json)\n", out.c_str());
-  return 0;
+  EngineWorker worker(engine, schedule_of(observers, scene.end_time));
+  QThread thread;
+  worker.moveToThread(&thread);
+  Progress progress(scene.end_time, options.quiet);
+  int status = exit_code::ok;
+
+  QObject::connect(&thread, &QThread::started, &worker, &EngineWorker::start);
+  QObject::connect(
+      &worker, &EngineWorker::snapshotReady, &qt,
+      [&](std::shared_ptr<const Snapshot> snap) {
+        try {
+          for (auto& o : observers)
+            if (contains_time(o->wanted_times(), snap->time)) o->observe(*snap);
+        } catch (const std::exception& e) {
+          record.message = std::string("writing the outputs failed: ") + e.what();
+          status = exit_code::io_failure;
+          worker.stop();
+          qt.exit(status);
+        }
+        worker.release();
+      },
+      Qt::QueuedConnection);
+  QObject::connect(&worker, &EngineWorker::progress, &qt,
+                   [&](double t, double steps) { progress.update(t, steps); });
+  QObject::connect(&worker, &EngineWorker::failed, &qt, [&](const QString& message) {
+    record.message = "the engine failed: " + message.toStdString();
+    status = exit_code::engine_failure;
+    qt.exit(status);
+  });
+  QObject::connect(&worker, &EngineWorker::finished, &qt, [&](bool completed) {
+    if (status == exit_code::ok && !completed) status = exit_code::interrupted;
+    qt.exit(status);
+  });
+  QTimer stop_poll;
+  QObject::connect(&stop_poll, &QTimer::timeout, &qt, [&] {
+    if (stop_requested()) worker.stop();
+  });
+  install_stop_handlers();
+  stop_poll.start(100);
+  thread.start();
+  qt.exec();
+  worker.stop();
+  thread.quit();
+  thread.wait();
+  progress.done();
+
+  for (auto& o : observers) o->finish();
+  record.status = status == exit_code::ok            ? "complete"
+                  : status == exit_code::interrupted ? "interrupted"
+                                                     : "failed";
+  record.steps = engine.stats().steps;
+  record.simulated_time = engine.time();
+  record.wall_time = progress.wall_seconds();
+  record.particle_steps = engine.stats().particle_steps;
+  try {
+    write_run_record(record, scene, out / "run.json");
+  } catch (const std::exception& e) {
+    std::cerr << "sedem: " << e.what() << '\n';
+    if (status == exit_code::ok) status = exit_code::io_failure;
+  }
+  if (status == exit_code::interrupted)
+    std::cerr << "sedem: stopped at t = " << engine.time() << " s; what was computed is in " << out
+              << '\n';
+  else if (status != exit_code::ok)
+    std::cerr << "sedem: " << record.message << '\n';
+  else if (!options.quiet)
+    std::printf("sedem: done in %.1f s; wrote %s\n", record.wall_time, out.c_str());
+  return status;
 }
 
 }  // namespace sedem::app

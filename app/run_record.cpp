@@ -1,0 +1,64 @@
+#include "app/run_record.h"
+
+#include <sys/resource.h>
+
+#include <fstream>
+#include <stdexcept>
+
+namespace sedem::app {
+
+nlohmann::json scene_json(Scene& scene) {
+  nlohmann::json out = nlohmann::json::object();
+  Schema schema = scene.schema();
+  for (const auto& p : schema.params()) {
+    std::visit(
+        [&](auto* v) {
+          using T = std::remove_pointer_t<decltype(v)>;
+          if constexpr (std::is_same_v<T, double>) {
+            out[p.key] = *v / p.to_si;
+          } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+            nlohmann::json list = nlohmann::json::array();
+            for (double x : *v) list.push_back(x / p.to_si);
+            out[p.key] = list;
+          } else {
+            out[p.key] = *v;
+          }
+        },
+        p.target);
+  }
+  return out;
+}
+
+std::size_t peak_memory_bytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return std::size_t(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
+}
+
+void write_run_record(const RunRecord& r, Scene& scene, const std::filesystem::path& file) {
+  nlohmann::json j;
+  j["status"] = r.status;
+  if (!r.message.empty()) j["message"] = r.message;
+  j["version"] = SEDEM_VERSION;
+  j["scene_file"] = r.scene_file;
+  j["scene"] = scene_json(scene);
+  j["seed"] = r.seed;
+  j["particle_count"] = r.particle_count;
+  j["steps"] = r.steps;
+  j["simulated_time_s"] = r.simulated_time;
+  j["wall_time_s"] = r.wall_time;
+  j["particle_steps_per_s"] = r.wall_time > 0 ? r.particle_steps / r.wall_time : 0.0;
+  j["peak_memory_bytes"] = peak_memory_bytes();
+  j["results"] = r.results;
+  auto tmp = file;
+  tmp += ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << j.dump(2) << '\n';
+    out.flush();
+    if (!out) throw std::runtime_error("cannot write " + tmp.string());
+  }
+  std::filesystem::rename(tmp, file);
+}
+
+}  // namespace sedem::app

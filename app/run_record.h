@@ -1,0 +1,36 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/scene/scene.h"
+
+namespace sedem::app {
+
+// run.json: what a run was and how it went. Written with status "running" when the run
+// starts and rewritten (atomically) when it ends, so a folder whose run.json does not say
+// "complete" is never mistaken for a finished run.
+struct RunRecord {
+  std::string status = "running";  // running | complete | interrupted | failed
+  std::string message;
+  std::string scene_file;
+  std::int64_t seed = 0;
+  std::size_t particle_count = 0;
+  std::int64_t steps = 0;
+  double simulated_time = 0;
+  double wall_time = 0;
+  double particle_steps = 0;
+  nlohmann::json results = nlohmann::json::object();  // each test's error and bias
+};
+
+// Every scene key with its value in user units, as a JSON object keyed by the dotted name.
+nlohmann::json scene_json(Scene& scene);
+
+// Peak resident memory of this process, bytes.
+std::size_t peak_memory_bytes();
+
+void write_run_record(const RunRecord& record, Scene& scene, const std::filesystem::path& file);
+
+}  // namespace sedem::app

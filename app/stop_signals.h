@@ -1,0 +1,12 @@
+#pragma once
+
+namespace sedem::app {
+
+// Ctrl-C (SIGINT) and SIGTERM ask the run to stop cleanly instead of killing the process:
+// the handler only records the request; the main loop polls it. A second Ctrl-C while
+// stopping kills the process as usual.
+void install_stop_handlers();
+bool stop_requested();
+int stop_signal();  // the signal that asked, 0 if none
+
+}  // namespace sedem::app

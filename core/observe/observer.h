@@ -1,0 +1,35 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/engine/engine.h"
+
+namespace sedem {
+
+// Something that looks at the simulation and cannot change it (fields, instruments, writers,
+// renderers). It says at which simulated times it needs the particles; the run stops the
+// engine at the union of those times and hands each observer the snapshots it asked for,
+// in time order, on one thread (the main thread: VTK and GL live there).
+class Observer {
+ public:
+  virtual ~Observer() = default;
+  virtual std::string name() const = 0;
+  // Times (s) at which this observer wants a snapshot, ascending.
+  virtual std::vector<double> wanted_times() const = 0;
+  virtual void observe(const Snapshot& snapshot) = 0;
+  // After the last snapshot, or when the run is stopped early: flush what was computed.
+  virtual void finish() {}
+};
+
+// Output times every `interval` from 0 to `end` inclusive (the last one at `end` exactly).
+std::vector<double> every(double interval, double end);
+
+// The sorted union of several time lists, with times closer than `tolerance` merged.
+std::vector<double> merge_times(const std::vector<std::vector<double>>& lists,
+                                double tolerance = 1e-9);
+
+// Does `times` contain `t` (within tolerance)?
+bool contains_time(const std::vector<double>& times, double t, double tolerance = 1e-9);
+
+}  // namespace sedem

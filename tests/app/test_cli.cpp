@@ -1,0 +1,111 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <vtkImageData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLPolyDataReader.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
+#include "render/offscreen_view.h"
+
+namespace sedem {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kOut = fs::path(SEDEM_TEST_OUTPUT) / "cli";
+const std::string kDemo = std::string(SEDEM_SOURCE_DIR) + "/scenes/demo.toml";
+
+nlohmann::json read_json(const fs::path& file) {
+  std::ifstream in(file);
+  return nlohmann::json::parse(in);
+}
+
+TEST(Cli, DemoRunWritesAReadableSeriesAndANonBlankFrame) {
+  const fs::path out = kOut / "demo";
+  fs::remove_all(out);
+  auto r = test::run_sedem("run " + kDemo + " --out " + out.string() + " --quiet");
+  ASSERT_EQ(r.status, 0) << r.output;
+
+  auto run = read_json(out / "run.json");
+  EXPECT_EQ(run["status"], "complete");
+  EXPECT_GT(run["particle_count"].get<int>(), 1000);
+  EXPECT_GT(run["particle_steps_per_s"].get<double>(), 0);
+  EXPECT_EQ(run["scene"]["name"], "demo");
+
+  auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+  reader->SetFileName((out / "particles/particles_000001.vtp").c_str());
+  reader->Update();
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), run["particle_count"].get<int>());
+
+  // A frame is not blank: a good share of its pixels are neither white nor the outline.
+  auto image = render::read_png(out / "frames/column_000000.png");
+  int dims[3];
+  image->GetDimensions(dims);
+  long coloured = 0;
+  for (int y = 0; y < dims[1]; ++y)
+    for (int x = 0; x < dims[0]; ++x) {
+      auto* px = static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
+      if (px[0] != px[1] || px[1] != px[2]) ++coloured;
+    }
+  EXPECT_GT(coloured, 1000);
+}
+
+TEST(Cli, HelpForEveryCommand) {
+  auto top = test::run_sedem("--help");
+  EXPECT_EQ(top.status, 0);
+  EXPECT_NE(top.output.find("run"), std::string::npos);
+  auto run = test::run_sedem("run --help");
+  EXPECT_EQ(run.status, 0);
+  EXPECT_NE(run.output.find("--set"), std::string::npos) << run.output;
+}
+
+TEST(Cli, MissingSceneFails) {
+  auto r = test::run_sedem("run /no/such/scene.toml --out " + (kOut / "x").string());
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("/no/such/scene.toml"), std::string::npos) << r.output;
+}
+
+TEST(Cli, InvalidValueNamesKeyValueAndRange) {
+  auto r = test::run_sedem("run " + kDemo + " --out " + (kOut / "bad").string() +
+                           " --set fluid.viscosity=-2");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("fluid.viscosity = -2 is out of range"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(kOut / "bad" / "run.json"));  // nothing ran
+}
+
+TEST(Cli, UnknownKeySuggestsTheNearest) {
+  auto r = test::run_sedem("run " + kDemo + " --out " + (kOut / "bad").string() +
+                           " --set sample.simulated_cuont=5");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("did you mean 'sample.simulated_count'"), std::string::npos) << r.output;
+}
+
+TEST(Cli, UnwritableOutputFolderFails) {
+  auto r = test::run_sedem("run " + kDemo + " --out /proc/sedem-cannot-write-here");
+  EXPECT_EQ(r.status, 3);
+  EXPECT_NE(r.output.find("cannot write to the output folder"), std::string::npos) << r.output;
+}
+
+TEST(Cli, InterruptedRunSaysSoAndKeepsWhatItWrote) {
+  const fs::path out = kOut / "interrupted";
+  fs::remove_all(out);
+  // A long run, stopped by SIGTERM after a moment.
+  const std::string cmd = "run " + kDemo + " --out " + out.string() +
+                          " --set run.end_time_s=1e6 --set output.frames=false --quiet & "
+                          "pid=$!; sleep 1.5; kill -TERM $pid; wait $pid";
+  auto r = test::run_sedem(cmd);
+  EXPECT_EQ(r.status, 130) << r.output;
+  auto run = read_json(out / "run.json");
+  EXPECT_EQ(run["status"], "interrupted");
+  EXPECT_GT(run["simulated_time_s"].get<double>(), 0);
+  EXPECT_TRUE(fs::exists(out / "particles.pvd"));
+  EXPECT_FALSE(fs::exists(out / "particles.pvd.tmp"));
+}
+
+}  // namespace
+}  // namespace sedem
