@@ -1,6 +1,6 @@
 #include "app/run_command.h"
 
-#include <QGuiApplication>
+#include <QCoreApplication>
 #include <QThread>
 #include <QTimer>
 
@@ -33,8 +33,8 @@ std::vector<double> schedule_of(const std::vector<std::unique_ptr<Observer>>& ob
 
 }  // namespace
 
-int run(const RunOptions& options, int argc, char** argv) {
-  QGuiApplication qt(argc, argv);
+int run(const RunOptions& options) {
+  auto& qt = *QCoreApplication::instance();
   qRegisterMetaType<std::shared_ptr<const Snapshot>>();
 
   Scene scene;

@@ -12,7 +12,7 @@ struct RunOptions {
   bool quiet = false;
 };
 
-// `sedem run`: returns the process exit status.
-int run(const RunOptions& options, int argc, char** argv);
+// `sedem run`: returns the process exit status. Needs a Qt application object.
+int run(const RunOptions& options);
 
 }  // namespace sedem::app

@@ -9,7 +9,7 @@ packages=(
   libeigen3-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libvtk9-dev qt6-base-dev
   libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev libglew-dev
-  libgtest-dev googletest
+  libgtest-dev googletest clang-format
 )
 
 missing=()

@@ -109,3 +109,29 @@ TEST(Cli, InterruptedRunSaysSoAndKeepsWhatItWrote) {
 
 }  // namespace
 }  // namespace sedem
+
+namespace sedem {
+namespace {
+
+TEST(Cli, BatchSweepRunsEachValueIntoItsOwnFolder) {
+  const fs::path out = kOut / "batch";
+  fs::remove_all(out);
+  auto r = test::run_sedem("batch " + kDemo + " --out " + out.string() +
+                           " --sweep sample.simulated_count=500,800 --set run.end_time_s=10"
+                           " --set output.frames=false --quiet");
+  ASSERT_EQ(r.status, 0) << r.output;
+  auto a = read_json(out / "demo__sample.simulated_count=500" / "run.json");
+  auto b = read_json(out / "demo__sample.simulated_count=800" / "run.json");
+  EXPECT_EQ(a["scene"]["sample.simulated_count"], 500);
+  EXPECT_EQ(b["scene"]["sample.simulated_count"], 800);
+  EXPECT_EQ(a["status"], "complete");
+}
+
+TEST(Cli, BatchRejectsAMalformedSweep) {
+  auto r = test::run_sedem("batch " + kDemo + " --sweep sample.simulated_count");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("expected key=v1,v2"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace sedem
