@@ -55,7 +55,22 @@ std::map<std::string, std::size_t> name_indices(const Figure& figure) {
   return index;
 }
 
-void style_axis(vtkAxis* axis, const PlotAxis& spec) {
+// VTK 9.1 draws nothing on a log axis left to find its own range, so a log axis without a
+// fixed range gets the whole decades around its positive data.
+std::optional<std::pair<double, double>> log_range(const Plot& plot, bool x) {
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (const auto& s : plot.series)
+    for (double v : x ? s.x : s.y)
+      if (std::isfinite(v) && v > 0) lo = std::min(lo, v), hi = std::max(hi, v);
+  if (!(lo <= hi)) return std::pair{1.0, 10.0};
+  lo = std::pow(10.0, std::floor(std::log10(lo) + 1e-9));
+  hi = std::pow(10.0, std::ceil(std::log10(hi) - 1e-9));
+  if (hi <= lo) hi = 10.0 * lo;
+  return std::pair{lo, hi};
+}
+
+void style_axis(vtkAxis* axis, PlotAxis spec, const Plot& plot, bool is_x) {
+  if (spec.log && !spec.range) spec.range = log_range(plot, is_x);
   axis->SetTitle(spec.title());
   axis->GetTitleProperties()->SetFontSize(13);
   axis->GetTitleProperties()->SetColor(0, 0, 0);
@@ -99,8 +114,8 @@ vtkSmartPointer<vtkChartXY> make_chart(const Plot& plot,
   chart->GetTitleProperties()->SetBold(true);
   chart->GetTitleProperties()->SetColor(0, 0, 0);
   chart->GetTitleProperties()->SetFontFamilyToArial();
-  style_axis(chart->GetAxis(vtkAxis::BOTTOM), plot.x);
-  style_axis(chart->GetAxis(vtkAxis::LEFT), plot.y);
+  style_axis(chart->GetAxis(vtkAxis::BOTTOM), plot.x, plot, true);
+  style_axis(chart->GetAxis(vtkAxis::LEFT), plot.y, plot, false);
   for (const auto& s : plot.series) {
     const bool points = s.style == SeriesStyle::points;
     vtkPlot* p = chart->AddPlot(points ? vtkChart::POINTS : vtkChart::LINE);
@@ -124,6 +139,12 @@ vtkSmartPointer<vtkChartXY> make_chart(const Plot& plot,
   chart->GetLegend()->GetLabelProperties()->SetFontSize(11);
   chart->GetLegend()->GetLabelProperties()->SetFontFamilyToArial();
   chart->GetLegend()->GetLabelProperties()->SetColor(0, 0, 0);
+  const bool right = plot.legend_corner == LegendCorner::top_right ||
+                     plot.legend_corner == LegendCorner::bottom_right;
+  const bool top =
+      plot.legend_corner == LegendCorner::top_right || plot.legend_corner == LegendCorner::top_left;
+  chart->GetLegend()->SetHorizontalAlignment(right ? vtkChartLegend::RIGHT : vtkChartLegend::LEFT);
+  chart->GetLegend()->SetVerticalAlignment(top ? vtkChartLegend::TOP : vtkChartLegend::BOTTOM);
   return chart;
 }
 

@@ -45,11 +45,14 @@ struct PlotSeries {
   std::optional<std::array<unsigned char, 3>> color;
 };
 
+enum class LegendCorner { top_right, top_left, bottom_right, bottom_left };
+
 struct Plot {
   std::string title;
   PlotAxis x, y;
   std::vector<PlotSeries> series;
   bool legend = true;
+  LegendCorner legend_corner = LegendCorner::top_right;  // inside the plot area
 };
 
 // Several plots in one image: a grid of `columns` panels per row, filled row by row, with
