@@ -7,14 +7,14 @@
 
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
-#include <vtkFieldData.h>
 #include <vtkIntArray.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkTypeUInt32Array.h>
-#include <vtkXMLPolyDataWriter.h>
+
+#include "render/vtk_xml.h"
 
 namespace sedem::render {
 
@@ -99,20 +99,8 @@ void write_particles_vtp(const Snapshot& snapshot, double particle_density,
   pd->AddArray(size_class);
   pd->AddArray(id);
   pd->SetActiveScalars("diameter");
-  auto time = double_array("TimeValue", 1, 1);
-  time->SetValue(0, snapshot.time);
-  poly->GetFieldData()->AddArray(time);
-
-  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
-  auto tmp = file;
-  tmp += ".tmp";
-  auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-  writer->SetFileName(tmp.c_str());
-  writer->SetInputData(poly);
-  writer->SetDataModeToAppended();
-  writer->SetCompressorTypeToZLib();
-  if (writer->Write() != 1) throw std::runtime_error("cannot write " + file.string());
-  std::filesystem::rename(tmp, file);
+  set_time_value(poly, snapshot.time);
+  write_vtk_xml(poly, file);
 }
 
 ParticleSeriesWriter::ParticleSeriesWriter(const std::filesystem::path& out_dir,

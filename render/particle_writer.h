@@ -24,9 +24,9 @@ class PvdSeries {
   std::vector<std::pair<double, std::string>> entries_;
 };
 
-// Writes a snapshot as VTK XML PolyData (appended, zlib-compressed): one vertex per particle,
-// point data diameter, radius (m), velocity (3 components, m/s, the active vectors), mass (kg),
-// weight, size_class, id; field data TimeValue. z = 0: the section's plane.
+// Writes a snapshot as VTK XML PolyData (appended raw binary, zlib-compressed): one vertex per
+// particle, point data diameter, radius (m), velocity (3 components, m/s, the active vectors), mass
+// (kg), weight, size_class, id; field data TimeValue. z = 0: the section's plane.
 void write_particles_vtp(const Snapshot& snapshot, double particle_density,
                          const std::filesystem::path& file);
 

@@ -32,3 +32,35 @@ inline Snapshot lattice_snapshot() {
 }
 
 }  // namespace sedem::test
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sedem::test {
+
+// The (timestep, file) entries of a .pvd collection, in file order.
+inline std::vector<std::pair<double, std::string>> parse_pvd(const std::filesystem::path& pvd) {
+  std::ifstream in(pvd);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  std::vector<std::pair<double, std::string>> entries;
+  const std::regex dataset(R"re(<DataSet\s+timestep="([^"]+)"[^>]*\sfile="([^"]+)"\s*/>)re");
+  for (auto it = std::sregex_iterator(s.begin(), s.end(), dataset); it != std::sregex_iterator();
+       ++it)
+    entries.emplace_back(std::stod((*it)[1].str()), (*it)[2].str());
+  return entries;
+}
+
+inline std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace sedem::test

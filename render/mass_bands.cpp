@@ -1,0 +1,242 @@
+#include "render/mass_bands.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+#include "render/offscreen_view.h"
+#include "render/pixel_canvas.h"
+
+namespace sedem::render {
+namespace {
+
+constexpr int kTitleHeight = 34;
+constexpr int kScaleWidth = 110;  // the grey scale's strip on the right
+constexpr PixelCanvas::Rgb kDiscColor = {25, 25, 25};
+
+std::string format(const char* fmt, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, v);
+  return buf;
+}
+
+std::string time_label(double t) {
+  return format(std::abs(t - std::round(t)) < 1e-9 ? "%.0f s" : "%.1f s", t);
+}
+
+unsigned char grey_of(double fraction, double full_scale) {
+  const double share = std::clamp(fraction / full_scale, 0.0, 1.0);
+  return static_cast<unsigned char>(std::lround(255.0 * (1.0 - share)));
+}
+
+struct PanelGeometry {
+  double col_x0, col_y0, col_y1, scale;  // column's lower-left corner, top, pixels per metre
+  double inset_x0, inset_side;
+};
+
+PanelGeometry panel_geometry(const MassBandsFigure& f, double px0, double py0) {
+  PanelGeometry g;
+  g.col_x0 = px0 + 14;
+  g.col_y0 = py0 + 12;
+  g.col_y1 = py0 + f.panel_height - 30;
+  g.scale = (g.col_y1 - g.col_y0) / f.height;
+  const double col_w = f.width * g.scale;
+  g.inset_x0 = g.col_x0 + col_w + 26;
+  const double gap = 8;
+  g.inset_side =
+      std::min(px0 + f.panel_width - 8 - g.inset_x0, (g.col_y1 - g.col_y0 - 2 * gap) / 3.0);
+  return g;
+}
+
+void draw_panel(PixelCanvas& canvas, const MassBandsFigure& f, const ColumnSample& sample,
+                const ColumnState& state, double full_scale, double px0, double py0) {
+  const auto g = panel_geometry(f, px0, py0);
+  const double col_w = f.width * g.scale;
+  canvas.text(sample.label + ", t = " + time_label(state.time_s), px0 + 0.5 * f.panel_width,
+              py0 + f.panel_height - 15, 13, true, true);
+
+  const auto& bands = state.band_mass_fraction;
+  const double band_h = bands.empty() ? 0 : (g.col_y1 - g.col_y0) / double(bands.size());
+  for (std::size_t k = 0; k < bands.size(); ++k) {
+    const unsigned char v = grey_of(bands[k], full_scale);
+    const double top = g.col_y1 - double(k) * band_h;
+    canvas.rectangle(g.col_x0, top - band_h, g.col_x0 + col_w, top, {v, v, v});
+  }
+  canvas.frame(g.col_x0, g.col_y0, g.col_x0 + col_w, g.col_y1);
+
+  const auto& p = state.particles;
+  const std::size_t n = std::min({p.x.size(), p.y.size(), p.diameter.size()});
+  const double col_h = g.col_y1 - g.col_y0;
+  for (const auto& inset : f.insets) {
+    const double side = g.inset_side;
+    const double zoom = g.scale * inset.magnification;  // pixels per metre inside the inset
+    const double fov = side / zoom;                     // metres shown across the inset
+    double world_y0 = 0, inset_y0 = 0;
+    switch (inset.where) {
+      case ColumnInset::Where::top:
+        world_y0 = f.height - fov;
+        inset_y0 = g.col_y1 - side;
+        break;
+      case ColumnInset::Where::middle:
+        world_y0 = 0.5 * (f.height - fov);
+        inset_y0 = g.col_y0 + 0.5 * (col_h - side);
+        break;
+      case ColumnInset::Where::bottom:
+        world_y0 = 0;
+        inset_y0 = g.col_y0;
+        break;
+    }
+    const double world_x0 = -0.5 * fov;
+    canvas.rectangle(g.inset_x0, inset_y0, g.inset_x0 + side, inset_y0 + side, {255, 255, 255});
+    for (std::size_t i = 0; i < n; ++i) {
+      const double r = 0.5 * p.diameter[i];
+      const double u = p.x[i] - world_x0, v = p.y[i] - world_y0;
+      if (u - r < 0 || v - r < 0 || u + r > fov || v + r > fov) continue;  // whole discs only
+      canvas.disc(g.inset_x0 + u * zoom, inset_y0 + v * zoom, r * zoom, kDiscColor);
+    }
+    canvas.frame(g.inset_x0, inset_y0, g.inset_x0 + side, inset_y0 + side);
+    // The zoomed window marked on the column, and a leader to its inset.
+    const double mx0 = g.col_x0 + 0.5 * col_w + world_x0 * g.scale;
+    const double my0 = g.col_y0 + world_y0 * g.scale;
+    const double m = std::max(fov * g.scale, 3.0);
+    canvas.frame(mx0, my0, mx0 + m, my0 + m);
+    canvas.line(mx0 + m, my0 + 0.5 * m, g.inset_x0, inset_y0 + 0.5 * side);
+    canvas.text(format("x%g", inset.magnification), g.inset_x0 + 4, inset_y0 + side - 8, 10, false);
+  }
+}
+
+void draw_grey_scale(PixelCanvas& canvas, double x0, double y0, double h, double full_scale) {
+  constexpr int steps = 20;
+  const double w = 18, step_h = h / steps;
+  for (int i = 0; i < steps; ++i) {
+    const double fraction = full_scale * (i + 0.5) / steps;
+    const unsigned char v = grey_of(fraction, full_scale);
+    canvas.rectangle(x0, y0 + i * step_h, x0 + w, y0 + (i + 1) * step_h, {v, v, v});
+  }
+  canvas.frame(x0, y0, x0 + w, y0 + h);
+  for (int i = 0; i <= 4; ++i) {
+    const double y = y0 + h * i / 4.0;
+    canvas.line(x0 + w, y, x0 + w + 4, y);
+    canvas.text(format("%.3g", 100.0 * full_scale * i / 4.0), x0 + w + 7, y, 11, false);
+  }
+  canvas.text("mass share", x0 + 0.5 * w + 20, y0 + h + 30, 12, true, true);
+  canvas.text("(% of total)", x0 + 0.5 * w + 20, y0 + h + 14, 11, true);
+}
+
+std::size_t row_count(const MassBandsFigure& f) {
+  std::size_t rows = 0;
+  for (const auto& s : f.samples) rows = std::max(rows, s.states.size());
+  return rows;
+}
+
+}  // namespace
+
+ParticleDiscs discs_of(const Particles& particles) {
+  return {particles.x, particles.y, particles.diameter};
+}
+
+vtkSmartPointer<vtkImageData> render_mass_bands(const MassBandsFigure& f) {
+  const std::size_t rows = row_count(f);
+  if (f.samples.empty() || rows == 0)
+    throw std::invalid_argument("a mass-band figure needs a sample with a state");
+  double full_scale = f.full_scale_fraction;
+  if (full_scale <= 0) {
+    for (const auto& s : f.samples)
+      for (const auto& st : s.states)
+        for (double v : st.band_mass_fraction) full_scale = std::max(full_scale, v);
+    if (full_scale <= 0) full_scale = 1;
+  }
+  const int title_h = f.title.empty() ? 0 : kTitleHeight;
+  const int width = int(f.samples.size()) * f.panel_width + kScaleWidth;
+  const int height = int(rows) * f.panel_height + title_h;
+
+  PixelCanvas canvas;
+  for (std::size_t c = 0; c < f.samples.size(); ++c)
+    for (std::size_t r = 0; r < f.samples[c].states.size(); ++r)
+      draw_panel(canvas, f, f.samples[c], f.samples[c].states[r], full_scale,
+                 double(c) * f.panel_width, double(rows - 1 - r) * f.panel_height);
+  const double body_h = double(rows) * f.panel_height;
+  draw_grey_scale(canvas, width - kScaleWidth + 16, 0.5 * body_h - 100, 200, full_scale);
+  if (title_h > 0) canvas.text(f.title, 0.5 * width, height - 0.5 * title_h, 18, true, true);
+
+  OffscreenView view(width, height);
+  canvas.draw(view.renderer(), width, height);
+  return view.capture();
+}
+
+void write_mass_bands_csv(const MassBandsFigure& f, const std::filesystem::path& file) {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> columns;
+  for (const auto& s : f.samples) {
+    for (const auto& st : s.states) {
+      const std::string pre = s.label + " t=" + time_label(st.time_s) + ":";
+      const auto& bands = st.band_mass_fraction;
+      std::vector<double> depth(bands.size()), percent(bands.size());
+      for (std::size_t k = 0; k < bands.size(); ++k) {
+        depth[k] = f.height * double(k) / double(bands.size());
+        percent[k] = 100.0 * bands[k];
+      }
+      header.push_back(pre + "band_top_depth_m");
+      columns.push_back(std::move(depth));
+      header.push_back(pre + "mass_percent");
+      columns.push_back(std::move(percent));
+    }
+  }
+  std::size_t rows = 0;
+  for (const auto& c : columns) rows = std::max(rows, c.size());
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  std::ofstream out(file);
+  for (std::size_t j = 0; j < header.size(); ++j) out << (j ? "," : "") << header[j];
+  out << "\n";
+  for (std::size_t i = 0; i < rows; ++i) {
+    for (std::size_t j = 0; j < columns.size(); ++j) {
+      if (j) out << ",";
+      if (i < columns[j].size()) out << format("%.9g", columns[j][i]);
+    }
+    out << "\n";
+  }
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+void write_mass_bands(const MassBandsFigure& figure, const std::filesystem::path& base) {
+  auto png = base, csv = base;
+  png += ".png";
+  csv += ".csv";
+  write_png(render_mass_bands(figure), png);
+  write_mass_bands_csv(figure, csv);
+}
+
+std::vector<double> band_fractions_from_layers(const std::vector<double>& layer_mass,
+                                               int layers_per_band) {
+  if (layers_per_band < 1) throw std::invalid_argument("layers_per_band must be at least 1");
+  const std::size_t per = std::size_t(layers_per_band);
+  std::vector<double> bands((layer_mass.size() + per - 1) / per, 0.0);
+  double total = 0;
+  for (std::size_t j = 0; j < layer_mass.size(); ++j) {
+    bands[j / per] += layer_mass[j];
+    total += layer_mass[j];
+  }
+  if (total > 0)
+    for (auto& b : bands) b /= total;
+  return bands;
+}
+
+std::vector<double> band_fractions_from_particles(const Particles& p, double height, int bands) {
+  if (bands < 1) throw std::invalid_argument("bands must be at least 1");
+  std::vector<double> mass(std::size_t(bands), 0.0);
+  double total = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double depth = height - p.y[i];
+    const int k = std::clamp(int(std::floor(depth / height * bands)), 0, bands - 1);
+    const double m = p.weight[i] * p.diameter[i] * p.diameter[i] * p.diameter[i];
+    mass[std::size_t(k)] += m;
+    total += m;
+  }
+  if (total > 0)
+    for (auto& m : mass) m /= total;
+  return mass;
+}
+
+}  // namespace sedem::render

@@ -1,0 +1,77 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <vtkImageData.h>
+#include <vtkSmartPointer.h>
+
+#include "core/model/particles.h"
+
+namespace sedem::render {
+
+// Fig. 11 of the paper: the column as grey bands of mass (grey = the band's share of the
+// total mass, white = none), with zoom insets that draw the particles as discs at true scale.
+// One panel per time (rows), several samples side by side (columns).
+
+// Particle centres and diameters in the section (m; x across, axis at 0; y up, bottom at 0).
+struct ParticleDiscs {
+  std::vector<double> x, y, diameter;
+};
+ParticleDiscs discs_of(const Particles& particles);
+
+// The column at one time.
+struct ColumnState {
+  double time_s = 0;
+  // Share of the total mass in each band, bands counted from the free surface down
+  // (the paper's layers grouped by 100: 4000 layers give 40 bands). Fractions of 1.
+  std::vector<double> band_mass_fraction;
+  ParticleDiscs particles;  // what the insets show; may be empty
+};
+
+struct ColumnSample {
+  std::string label;                // e.g. "sample 1"
+  std::vector<ColumnState> states;  // one panel each, top to bottom
+};
+
+// A zoom window on the axis of the column, drawn beside it.
+struct ColumnInset {
+  enum class Where { top, middle, bottom } where;
+  double magnification;  // relative to the column's own scale in the picture
+};
+
+struct MassBandsFigure {
+  std::string title;
+  double height = 0.457;  // m, the column H
+  double width = 0.0635;  // m, the section B
+  std::vector<ColumnSample> samples;
+  std::vector<ColumnInset> insets = {{ColumnInset::Where::top, 25.0},
+                                     {ColumnInset::Where::middle, 25.0},
+                                     {ColumnInset::Where::bottom, 62.5}};
+  int panel_width = 230;  // pixels
+  int panel_height = 380;
+  // Share of the total mass drawn black. 0: the largest band share in the figure.
+  double full_scale_fraction = 0;
+};
+
+vtkSmartPointer<vtkImageData> render_mass_bands(const MassBandsFigure& figure);
+
+// CSV: per sample and time, "<sample> t=<time> s:band_top_depth_m" and
+// "<sample> t=<time> s:mass_percent".
+void write_mass_bands_csv(const MassBandsFigure& figure, const std::filesystem::path& file);
+
+// Writes `<base>.png` and `<base>.csv`.
+void write_mass_bands(const MassBandsFigure& figure, const std::filesystem::path& base);
+
+// Groups per-layer masses (from the free surface down) into bands of `layers_per_band`
+// layers (the last band takes the remainder) and divides by the total mass.
+std::vector<double> band_fractions_from_layers(const std::vector<double>& layer_mass,
+                                               int layers_per_band = 100);
+
+// The same from particles directly: mass of particle i taken as weight_i * diameter_i^3
+// (one density), bands of equal height from the free surface at y = height down.
+std::vector<double> band_fractions_from_particles(const Particles& particles, double height,
+                                                  int bands);
+
+}  // namespace sedem::render

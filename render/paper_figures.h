@@ -1,0 +1,127 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/engine/engine.h"
+#include "core/model/fluid.h"
+#include "render/plot.h"
+
+namespace sedem::render {
+
+// The paper's Figs. 12-18 as recipes: plain inputs in SI units (filled from the fields and
+// the instruments' results), a Figure out (plots in user-facing units: µm, cm, g, s).
+// write_figNN(input, dir) writes dir/<name>.png and dir/<name>.csv; docs/figures.md lists
+// the CSV columns.
+
+// Fig. 12: the largest diameter still above each depth (from the particles) against the
+// limiting diameter of Eq. 16, one panel per time.
+struct DiameterProfile {
+  double time_s = 0;
+  std::vector<double> depth_m;             // below the free surface
+  std::vector<double> largest_diameter_m;  // of the particles above that depth
+};
+struct SampleDiameterProfiles {
+  std::string sample;
+  std::vector<DiameterProfile> profiles;  // one per time
+};
+struct LargestDiameterInput {
+  std::vector<SampleDiameterProfiles> samples;
+  double column_height_m = 0.457;
+  double particle_density = 2500.0;  // kg/m^3, for Eq. 16
+  Fluid fluid;
+};
+Figure fig12_largest_diameter(const LargestDiameterInput& input);
+
+// A Fig. 12 profile from the particles: at `points` depths evenly spaced down to the bottom,
+// the largest diameter of the particles above that depth (0 where there are none).
+DiameterProfile largest_diameter_profile(const Snapshot& snapshot, double column_height_m,
+                                         int points = 200);
+
+// Fig. 13: suspension density along the hydrometer's bulb, one panel per sample, one curve
+// per time.
+struct BulbDensityProfile {
+  double time_s = 0;
+  std::vector<double> position_m;  // along the bulb, 0 at its top, 0.14 at its tip
+  std::vector<double> density_kg_m3;
+};
+struct SampleBulbDensity {
+  std::string sample;
+  std::vector<BulbDensityProfile> profiles;
+};
+Figure fig13_bulb_density(const std::vector<SampleBulbDensity>& samples);
+
+// Fig. 14: the density averaged along the bulb (from the layers) against Eq. 19 (from the
+// hydrometer's depth), over time; one panel per sample.
+struct BulbAverageSeries {
+  std::string sample;
+  std::vector<double> time_s;
+  std::vector<double> simulated_kg_m3;  // average of the layers along the bulb
+  std::vector<double> eq19_kg_m3;       // r_s rho_f of Eq. 19
+};
+Figure fig14_bulb_average(const std::vector<BulbAverageSeries>& samples);
+
+// Fig. 15: the hydrometer's readings against time, one curve per sample.
+struct HydrometerSeries {
+  std::string sample;
+  std::vector<double> time_s;
+  std::vector<double> centre_depth_m;  // y_go, the bulb's centre below the free surface
+  std::vector<double> diameter_m;      // phi_o, Eq. 16
+  std::vector<double> percent_finer;   // w_o, Eq. 18
+};
+Figure fig15_hydrometer(const std::vector<HydrometerSeries>& samples);
+
+// Fig. 16: the buoyancy sphere's readings against time.
+struct BuoyancySeries {
+  std::string sample;
+  std::vector<double> time_s;
+  std::vector<double> apparent_mass_kg;  // m_sp
+  std::vector<double> diameter_m;
+  std::vector<double> percent_finer;  // Eq. 22
+};
+Figure fig16_buoyancy(const std::vector<BuoyancySeries>& samples);
+
+// Fig. 17: the pipette's readings against time.
+struct PipetteSeries {
+  std::string sample;
+  std::vector<double> time_s;
+  std::vector<double> diameter_m;
+  std::vector<double> percent_finer;  // Eq. 17
+};
+Figure fig17_pipette(const std::vector<PipetteSeries>& samples);
+
+// Fig. 18: each test's grading curve against the true one, one panel per sample. A test's
+// reference curve (the same instrument applied to the continuum solution) is drawn dashed
+// in the test's colour.
+struct GradingCurve {
+  std::string name;  // "true", "hydrometer", ...
+  std::vector<double> diameter_m;
+  std::vector<double> percent_finer;
+};
+struct SampleGrading {
+  std::string sample;
+  GradingCurve truth;
+  std::vector<GradingCurve> tests;       // from the simulation
+  std::vector<GradingCurve> references;  // same order as `tests`; may be empty
+};
+Figure fig18_granulometry(const std::vector<SampleGrading>& samples);
+
+// File names (without extension) used by the writers below.
+inline constexpr const char* kFig12Name = "fig12_largest_diameter";
+inline constexpr const char* kFig13Name = "fig13_bulb_density";
+inline constexpr const char* kFig14Name = "fig14_bulb_average";
+inline constexpr const char* kFig15Name = "fig15_hydrometer";
+inline constexpr const char* kFig16Name = "fig16_buoyancy";
+inline constexpr const char* kFig17Name = "fig17_pipette";
+inline constexpr const char* kFig18Name = "fig18_granulometry";
+
+void write_fig12(const LargestDiameterInput& input, const std::filesystem::path& dir);
+void write_fig13(const std::vector<SampleBulbDensity>& input, const std::filesystem::path& dir);
+void write_fig14(const std::vector<BulbAverageSeries>& input, const std::filesystem::path& dir);
+void write_fig15(const std::vector<HydrometerSeries>& input, const std::filesystem::path& dir);
+void write_fig16(const std::vector<BuoyancySeries>& input, const std::filesystem::path& dir);
+void write_fig17(const std::vector<PipetteSeries>& input, const std::filesystem::path& dir);
+void write_fig18(const std::vector<SampleGrading>& input, const std::filesystem::path& dir);
+
+}  // namespace sedem::render

@@ -1,0 +1,84 @@
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <vtkImageData.h>
+#include <vtkSmartPointer.h>
+
+namespace sedem::render {
+
+// A generic 2D plot described by plain data, drawn offscreen with VTK's charts and written
+// with the same numbers as CSV, so every picture can be replotted elsewhere.
+
+enum class SeriesStyle { line, dashed, points, line_and_points };
+
+struct PlotAxis {
+  std::string quantity;  // shown on the axis as "quantity (unit)"
+  std::string unit;      // user-facing unit, e.g. "s", "µm", "%"
+  std::string column;    // CSV column name; empty: derived, e.g. "time_s", "diameter_um"
+  bool log = false;
+  std::optional<std::pair<double, double>> range;  // fixed; otherwise fitted to the data
+
+  std::string title() const;        // "diameter (µm)"
+  std::string column_name() const;  // `column`, or quantity and unit as an identifier
+};
+
+PlotAxis axis(std::string quantity, std::string unit, bool log = false);
+PlotAxis axis(std::string quantity, std::string unit, double min, double max, bool log = false);
+
+struct PlotSeries {
+  PlotSeries() = default;
+  PlotSeries(std::string name, std::vector<double> x, std::vector<double> y,
+             SeriesStyle style = SeriesStyle::line)
+      : name(std::move(name)), x(std::move(x)), y(std::move(y)), style(style) {}
+
+  std::string name;  // legend entry
+  std::vector<double> x, y;
+  SeriesStyle style = SeriesStyle::line;
+  // RGB; when unset the colour follows the series' name, so one name has one colour in
+  // every panel of a figure.
+  std::optional<std::array<unsigned char, 3>> color;
+};
+
+enum class LegendCorner { top_right, top_left, bottom_right, bottom_left };
+
+struct Plot {
+  std::string title;
+  PlotAxis x, y;
+  std::vector<PlotSeries> series;
+  bool legend = true;
+  LegendCorner legend_corner = LegendCorner::top_right;  // inside the plot area
+};
+
+// Several plots in one image: a grid of `columns` panels per row, filled row by row, with
+// the figure's title above. One panel is a single plot.
+struct Figure {
+  std::string title;
+  std::vector<Plot> panels;
+  int columns = 1;
+  int panel_width = 480;  // pixels; keep the whole image at most 1600 wide
+  int panel_height = 360;
+};
+
+// A figure holding one plot.
+Figure single_plot(Plot plot, int width = 640, int height = 440);
+
+vtkSmartPointer<vtkImageData> render_figure(const Figure& figure);
+
+// CSV: two columns per series, "<series>:<x column>" and "<series>:<y column>", prefixed
+// with "<panel title>/" when the figure has more than one panel; shorter series leave their
+// cells empty. Numbers with 9 significant digits.
+void write_figure_csv(const Figure& figure, const std::filesystem::path& file);
+
+// Writes `<base>.png` and `<base>.csv`.
+void write_figure(const Figure& figure, const std::filesystem::path& base);
+
+// The colour given to the i-th distinct series name (a fixed, colour-blind friendly list).
+std::array<unsigned char, 3> palette_color(std::size_t i);
+
+}  // namespace sedem::render

@@ -1,0 +1,231 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "core/physics/stokes.h"
+#include "render/image_compare.h"
+#include "render/paper_figures.h"
+#include "render_test_support.h"
+
+namespace sedem {
+namespace {
+
+// Small fixed inputs built from closed forms: what matters is that each recipe draws them
+// with the right axes, units and legends, the same way every time.
+
+const std::vector<double> kHydrometerTimes = {120, 300, 900, 1800, 3600, 15000, 86400};
+
+double finer_at(double diameter_um, int sample) {
+  // A log-normal-like grading: sample 1 fine, sample 2 coarse.
+  const double d50 = sample == 1 ? 10.0 : 40.0;
+  return 100.0 / (1.0 + std::pow(d50 / diameter_um, 2.5));
+}
+
+std::vector<render::HydrometerSeries> hydrometer_input() {
+  std::vector<render::HydrometerSeries> out;
+  for (int k = 1; k <= 2; ++k) {
+    render::HydrometerSeries s;
+    s.sample = "sample " + std::to_string(k);
+    for (double t : kHydrometerTimes) {
+      const double depth = 0.13 + 0.02 * (1 - std::exp(-t / (k == 1 ? 5000.0 : 600.0)));
+      const double d = stokes::limiting_diameter(depth, t, 2500.0, Fluid{});
+      s.time_s.push_back(t);
+      s.centre_depth_m.push_back(depth);
+      s.diameter_m.push_back(d);
+      s.percent_finer.push_back(finer_at(d * 1e6, k));
+    }
+    out.push_back(s);
+  }
+  return out;
+}
+
+void expect_matches(const render::Figure& figure, const char* baseline) {
+  auto image = render::render_figure(figure);
+  int dims[3];
+  image->GetDimensions(dims);
+  EXPECT_LE(dims[0], 1600);
+  auto result = render::compare_with_baseline(image, test::baseline(baseline), test::output_dir());
+  EXPECT_TRUE(result.passed) << result.message;
+}
+
+TEST(PaperFigures, Fig12Eq16CurveIsTheLimitingDiameter) {
+  render::LargestDiameterInput in;
+  for (int k = 1; k <= 2; ++k) {
+    render::SampleDiameterProfiles s{"sample " + std::to_string(k), {}};
+    for (double t : {60.0, 300.0}) {
+      render::DiameterProfile p;
+      p.time_s = t;
+      for (int i = 1; i <= 20; ++i) {
+        const double depth = 0.457 * i / 20;
+        p.depth_m.push_back(depth);
+        p.largest_diameter_m.push_back(
+            std::min(70e-6 - 5e-6 * k, stokes::limiting_diameter(depth, t, 2500, Fluid{})));
+      }
+      s.profiles.push_back(p);
+    }
+    in.samples.push_back(s);
+  }
+  const auto f = render::fig12_largest_diameter(in);
+  ASSERT_EQ(f.panels.size(), 2u);  // one per time
+  EXPECT_EQ(f.panels[0].title, "t = 60 s");
+  const auto& eq16 = f.panels[0].series.back();
+  EXPECT_EQ(eq16.name, "Eq. 16");
+  // sqrt(18 mu / ((rho_p - rho_f) g) * y / t) at y = H, t = 60 s: 96.5 µm.
+  EXPECT_NEAR(eq16.y.back(), 1e6 * std::sqrt(18e-3 / (1500 * 9.81) * 0.457 / 60), 1e-9);
+  EXPECT_NEAR(eq16.y.back(), 96.5, 0.1);
+  EXPECT_DOUBLE_EQ(f.panels[1].series[1].y[0],
+                   1e6 * in.samples[1].profiles[1].largest_diameter_m[0]);
+  expect_matches(f, "fig12.png");
+}
+
+TEST(PaperFigures, LargestDiameterProfileFromParticles) {
+  Snapshot snap;
+  snap.time = 60;
+  snap.particles.resize(3);
+  snap.particles.y = {0.9, 0.5, 0.05};  // depths 0.1, 0.5, 0.95 in a 1 m column
+  snap.particles.diameter = {10e-6, 30e-6, 20e-6};
+  const auto p = render::largest_diameter_profile(snap, 1.0, 10);
+  ASSERT_EQ(p.depth_m.size(), 10u);
+  EXPECT_DOUBLE_EQ(p.time_s, 60.0);
+  EXPECT_DOUBLE_EQ(p.largest_diameter_m[0], 10e-6);  // down to 0.1 m
+  EXPECT_DOUBLE_EQ(p.largest_diameter_m[3], 10e-6);  // 0.4 m
+  EXPECT_DOUBLE_EQ(p.largest_diameter_m[4], 30e-6);  // 0.5 m
+  EXPECT_DOUBLE_EQ(p.largest_diameter_m[9], 30e-6);  // the bottom
+}
+
+TEST(PaperFigures, Fig13BulbDensity) {
+  std::vector<render::SampleBulbDensity> in;
+  for (int k = 1; k <= 2; ++k) {
+    render::SampleBulbDensity s{"sample " + std::to_string(k), {}};
+    for (double t : {0.0, 60.0, 300.0, 900.0}) {
+      render::BulbDensityProfile p;
+      p.time_s = t;
+      for (int i = 0; i <= 14; ++i) {
+        const double h = 0.01 * i;
+        p.position_m.push_back(h);
+        p.density_kg_m3.push_back(1000 + 15 * std::exp(-t / (300.0 * k)) * (1 + 2 * h * t / 900));
+      }
+      s.profiles.push_back(p);
+    }
+    in.push_back(s);
+  }
+  const auto f = render::fig13_bulb_density(in);
+  ASSERT_EQ(f.panels.size(), 2u);
+  EXPECT_EQ(f.panels[0].series.size(), 4u);
+  EXPECT_DOUBLE_EQ(f.panels[0].series[0].x.back(), 14.0);  // cm
+  EXPECT_EQ(f.panels[0].x.unit, "cm");
+  expect_matches(f, "fig13.png");
+}
+
+TEST(PaperFigures, Fig14BulbAverage) {
+  render::BulbAverageSeries s;
+  s.sample = "sample 3";
+  for (double t : kHydrometerTimes) {
+    s.time_s.push_back(t);
+    s.eq19_kg_m3.push_back(1000 + 15 * std::exp(-t / 2000));
+    s.simulated_kg_m3.push_back(1000 + 15 * std::exp(-t / 2000) + (t < 1000 ? 1.0 : 0.0));
+  }
+  const auto f = render::fig14_bulb_average({s});
+  ASSERT_EQ(f.panels.size(), 1u);
+  EXPECT_TRUE(f.panels[0].x.log);
+  EXPECT_EQ(f.panels[0].series[0].name, "Eq. 19");
+  expect_matches(f, "fig14.png");
+}
+
+TEST(PaperFigures, Fig15HydrometerInCentimetresAndMicrometres) {
+  const auto in = hydrometer_input();
+  const auto f = render::fig15_hydrometer(in);
+  ASSERT_EQ(f.panels.size(), 3u);
+  EXPECT_DOUBLE_EQ(f.panels[0].series[1].y[0], 100 * in[1].centre_depth_m[0]);
+  EXPECT_DOUBLE_EQ(f.panels[1].series[0].y[2], 1e6 * in[0].diameter_m[2]);
+  EXPECT_DOUBLE_EQ(f.panels[2].series[0].y[3], in[0].percent_finer[3]);
+  expect_matches(f, "fig15.png");
+}
+
+TEST(PaperFigures, Fig16BuoyancyInGrams) {
+  std::vector<render::BuoyancySeries> in;
+  for (int k = 1; k <= 2; ++k) {
+    render::BuoyancySeries s;
+    s.sample = "sample " + std::to_string(k);
+    for (double minutes : {0.5, 1.0, 2.0, 4.0, 15.0, 30.0, 60.0, 120.0, 240.0, 480.0}) {
+      const double t = 60 * minutes;
+      const double d = stokes::limiting_diameter(0.3 * 0.457, t, 2500.0, Fluid{});
+      const double finer = finer_at(d * 1e6, k);
+      s.time_s.push_back(t);
+      s.apparent_mass_kg.push_back(1.62e-3 - 0.1e-3 * finer / 100);
+      s.diameter_m.push_back(d);
+      s.percent_finer.push_back(finer);
+    }
+    in.push_back(s);
+  }
+  const auto f = render::fig16_buoyancy(in);
+  ASSERT_EQ(f.panels.size(), 3u);
+  EXPECT_EQ(f.panels[0].y.column_name(), "apparent_mass_g");
+  EXPECT_NEAR(f.panels[0].series[0].y[0], 1e3 * in[0].apparent_mass_kg[0], 1e-12);
+  expect_matches(f, "fig16.png");
+}
+
+TEST(PaperFigures, Fig17Pipette) {
+  std::vector<render::PipetteSeries> in;
+  for (int k = 1; k <= 2; ++k) {
+    render::PipetteSeries s;
+    s.sample = "sample " + std::to_string(k);
+    for (double minutes : {0.5, 1.0, 2.0, 4.0, 15.0, 30.0, 60.0, 120.0, 240.0, 480.0}) {
+      const double t = 60 * minutes;
+      const double d = stokes::limiting_diameter(0.3 * 0.457, t, 2500.0, Fluid{});
+      s.time_s.push_back(t);
+      s.diameter_m.push_back(d);
+      s.percent_finer.push_back(finer_at(d * 1e6, k) + (k == 2 && minutes < 3 ? 2.0 : 0.0));
+    }
+    in.push_back(s);
+  }
+  const auto f = render::fig17_pipette(in);
+  ASSERT_EQ(f.panels.size(), 2u);
+  expect_matches(f, "fig17.png");
+}
+
+TEST(PaperFigures, Fig18GradingOnALogDiameterAxis) {
+  std::vector<render::SampleGrading> in;
+  const auto hydro = hydrometer_input();
+  for (int k = 1; k <= 2; ++k) {
+    render::SampleGrading g;
+    g.sample = "sample " + std::to_string(k);
+    g.truth.name = "true";
+    for (int i = 0; i <= 40; ++i) {
+      const double d = 2.5 * std::pow(28.0, i / 40.0);
+      g.truth.diameter_m.push_back(d * 1e-6);
+      g.truth.percent_finer.push_back(finer_at(d, k));
+    }
+    const auto& h = hydro[std::size_t(k - 1)];
+    g.tests.push_back({"hydrometer", h.diameter_m, h.percent_finer});
+    render::GradingCurve ref{"hydrometer (reference)", h.diameter_m, {}};
+    for (double d : h.diameter_m) ref.percent_finer.push_back(finer_at(d * 1e6, k) + 1.5);
+    g.references.push_back(ref);
+    render::GradingCurve pipette{"pipette", {}, {}};
+    for (double d : {60e-6, 40e-6, 25e-6, 12e-6, 6e-6, 3e-6}) {
+      pipette.diameter_m.push_back(d);
+      pipette.percent_finer.push_back(finer_at(d * 1e6, k) * 1.04);
+    }
+    g.tests.push_back(pipette);
+    in.push_back(g);
+  }
+  const auto f = render::fig18_granulometry(in);
+  ASSERT_EQ(f.panels.size(), 2u);
+  EXPECT_TRUE(f.panels[0].x.log);
+  EXPECT_EQ(f.panels[0].x.column_name(), "diameter_um");
+  ASSERT_EQ(f.panels[0].series.size(), 4u);  // true, hydrometer, its reference, pipette
+  EXPECT_EQ(f.panels[0].series[2].style, render::SeriesStyle::dashed);
+  EXPECT_EQ(f.panels[0].series[2].color, f.panels[0].series[1].color);
+
+  const auto dir = test::output_dir() / "fig18";
+  render::write_fig18(in, dir);
+  std::ifstream csv(dir / (std::string(render::kFig18Name) + ".csv"));
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header.substr(0, 58), "sample 1/true:diameter_um,sample 1/true:percent_finer,samp");
+  expect_matches(f, "fig18.png");
+}
+
+}  // namespace
+}  // namespace sedem
