@@ -136,16 +136,30 @@ void place_particles(Particles& p, const Cylinder& c, const PlacementConfig& con
   const std::int64_t side = cells_per_side(config, n);
   const std::size_t cells = std::size_t(side * side);
 
-  // Deal the particles, in random order, to the cells, taken in random order: every cell
-  // gets floor(n / cells) particles and a random n mod cells of them one more.
-  std::vector<std::uint32_t> cell_order(cells);
-  std::iota(cell_order.begin(), cell_order.end(), 0u);
-  for (std::size_t i = cells; i > 1; --i) std::swap(cell_order[i - 1], cell_order[random.below(i)]);
-  std::vector<std::uint32_t> deal(n);
-  std::iota(deal.begin(), deal.end(), 0u);
-  for (std::size_t i = n; i > 1; --i) std::swap(deal[i - 1], deal[random.below(i)]);
+  // The order in which cells receive particles: n_mt passes, each visiting every row once
+  // in a random order, and each row's cells in a random order over the passes. Particles are
+  // dealt in their order in the arrays, so a run of consecutive particles (one size, as
+  // build_sample orders them) is spread evenly over the height: in L particles every row
+  // gets floor(L / n_mt) of them, give or take one or two. Dealing wraps around when there
+  // are more particles than cells: every cell gets floor(n / cells) or one more.
+  const auto n_side = std::size_t(side);
+  std::vector<std::uint32_t> columns(cells);
+  for (std::size_t row = 0; row < n_side; ++row) {
+    auto* cols = columns.data() + row * n_side;
+    std::iota(cols, cols + n_side, 0u);
+    for (std::size_t i = n_side; i > 1; --i) std::swap(cols[i - 1], cols[random.below(i)]);
+  }
+  std::vector<std::uint32_t> cell_order;
+  cell_order.reserve(cells);
+  std::vector<std::uint32_t> rows(n_side);
+  for (std::size_t pass = 0; pass < n_side; ++pass) {
+    std::iota(rows.begin(), rows.end(), 0u);
+    for (std::size_t i = n_side; i > 1; --i) std::swap(rows[i - 1], rows[random.below(i)]);
+    for (std::uint32_t row : rows)
+      cell_order.push_back(std::uint32_t(row * n_side + columns[row * n_side + pass]));
+  }
   std::vector<std::uint32_t> cell_of(n);
-  for (std::size_t s = 0; s < n; ++s) cell_of[deal[s]] = cell_order[s % cells];
+  for (std::size_t i = 0; i < n; ++i) cell_of[i] = cell_order[i % cells];
 
   // Large particles first: small ones fit into the gaps the large ones leave.
   std::vector<std::uint32_t> order(n);

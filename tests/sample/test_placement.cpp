@@ -57,6 +57,28 @@ TEST(Placement, EveryCellHoldsItsShare) {
   }
 }
 
+// Each size is stratified over the height, not only the whole sample: with L particles of a
+// size and n_mt rows, every row holds floor(L / n_mt) of them, give or take one or two (a
+// random deal would leave rows with none and rows with many).
+TEST(Placement, EverySizeIsSpreadEvenlyOverTheRows) {
+  const Scene scene = parse_scene(
+      "[sample]\nsimulated_count = 20000\nsize_count = 3\n[sample.grading]\n"
+      "diameters_um = [5, 20, 60]\npercent_finer = [0, 50, 100]\n",
+      "rows.toml");
+  const Sample s = build_sample(scene);
+  const std::int64_t side = cells_per_side(PlacementConfig{}, s.particles.size());
+  ASSERT_EQ(side, 142);
+  for (std::size_t k = 0; k < s.classes.size(); ++k) {
+    std::vector<long> per_row(std::size_t(side), 0);
+    for (std::size_t i = 0; i < s.particles.size(); ++i)
+      if (s.particles.size_class[i] == std::int32_t(k))
+        per_row[std::size_t(s.particles.y[i] / scene.cylinder.height * double(side))] += 1;
+    const long base = s.classes[k].simulated_count / side;
+    EXPECT_GE(*std::min_element(per_row.begin(), per_row.end()), base - 1) << "size " << k;
+    EXPECT_LE(*std::max_element(per_row.begin(), per_row.end()), base + 2) << "size " << k;
+  }
+}
+
 // Brute force over every pair, in a small dense section (a third of the plane covered).
 TEST(Placement, NoOverlapAndInsideTheWallsBottomAndSurface) {
   Cylinder c;
@@ -128,7 +150,7 @@ TEST(Placement, AMillionParticlesOfRatio28AreQuick) {
   std::printf("placed 1e6 particles (area fraction %.3f) in %.2f s\n", area_fraction(p, c),
               seconds);
   EXPECT_LT(seconds, 10.0);
-  for (std::size_t i = 0; i < p.size(); i += 20000) {  // spot-check the large ones
+  for (std::size_t i = 0; i < p.size(); i += 20000) {  // the large ones overlap nothing
     for (std::size_t j = 0; j < p.size(); ++j) {
       if (j == i) continue;
       const double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j];
@@ -136,6 +158,20 @@ TEST(Placement, AMillionParticlesOfRatio28AreQuick) {
       ASSERT_GE(dx * dx + dy * dy, touch * touch);
     }
   }
+}
+
+// The paper's cylinder, a log-uniform curve in 220 sizes, 10^6 particles: the whole sample
+// (discretisation, weights, placement) is built in about half a second.
+TEST(Placement, AMillionParticleSampleIsQuick) {
+  const Scene scene = parse_scene("[sample]\nsimulated_count = 1000000\n", "million.toml");
+  const auto start = std::chrono::steady_clock::now();
+  const Sample s = build_sample(scene);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("built a 1e6-particle sample (area fraction %.4f) in %.2f s\n", s.area_fraction,
+              seconds);
+  EXPECT_EQ(s.particles.size(), 1000000u);
+  EXPECT_LT(seconds, 10.0);
 }
 
 }  // namespace

@@ -85,7 +85,8 @@ TEST(Weights, CountsByLargestRemainderWithOnePerSize) {
 // particle stands for 1/f grains, and the simulated grains weigh f x 60 g / 180.
 TEST(Weights, MassFractionSetsTheCount) {
   const Scene scene = parse_scene(
-      "[sample]\nsize_count = 10\nmass_fraction = 1e-4\nweighting = \"uniform_count\"\n[sample.grading]\n"
+      "[sample]\nsize_count = 10\nmass_fraction = 1e-4\nweighting = "
+      "\"uniform_count\"\n[sample.grading]\n"
       "family = \"table\"\ndiameters_um = [20, 40]\npercent_finer = [0, 100]\n",
       "fraction.toml");
   EXPECT_EQ(scene.sample.simulated_count, 0);
