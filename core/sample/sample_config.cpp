@@ -25,7 +25,8 @@ void describe(SampleConfig& c, Schema& s) {
             "Seed of the random placement (same seed, same sample).");
   s.choice("sample.grading.family", &c.grading.family,
            {"table", "log_uniform", "log_normal", "rosin_rammler", "single"},
-           "Shape of the grading curve: a table of points, a named family, or one size.");
+           "Shape of the grading curve: a table of points, a named family, or one size "
+           "(single ignores sample.size_count).");
   s.list("sample.grading.diameters_um", &c.grading.diameters, "um", 1e-6, 0.01, 10000,
          "table: diameters, strictly ascending (percent finer interpolated linearly in log d).");
   s.list("sample.grading.percent_finer", &c.grading.percent_finer, "%", 1, 0, 100,

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -82,6 +83,23 @@ TEST(SceneChecks, CountAndFractionAreAlternatives) {
   // A fraction alone in the file replaces the default count.
   s = parse_scene("[sample]\nmass_fraction = 0.01\n", "f.toml");
   EXPECT_EQ(s.sample.simulated_count, 0);
+}
+
+// The resolved scene lists both keys, the unused one as 0: read back as overrides it must
+// give the same scene.
+TEST(SceneChecks, ResolvedSceneWithAFractionReadsBack) {
+  Scene s = parse_scene("[sample]\nmass_fraction = 0.01\n", "f.toml");
+  std::vector<std::string> sets;
+  std::istringstream lines(resolved_toml(s));
+  for (std::string line; std::getline(lines, line);) {
+    line = line.substr(0, line.find("  #"));
+    const auto eq = line.find(" = ");
+    sets.push_back(line.substr(0, eq) + "=" + line.substr(eq + 3));
+  }
+  Scene back = parse_scene("", "b.toml", sets);
+  EXPECT_EQ(back.sample.simulated_count, 0);
+  EXPECT_DOUBLE_EQ(back.sample.mass_fraction, 0.01);
+  EXPECT_EQ(resolved_toml(back), resolved_toml(s));
 }
 
 TEST(SceneChecks, EverySizeNeedsAParticle) {
