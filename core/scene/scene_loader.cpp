@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <sstream>
 
@@ -22,19 +23,18 @@ std::string where(const std::string& source, const toml::node& node) {
 
 std::string node_text(const toml::node& node) {
   std::ostringstream os;
+  if (const auto* arr = node.as_array()) {
+    os << '[';
+    for (std::size_t i = 0; i < arr->size(); ++i) os << (i ? ", " : "") << node_text(*arr->get(i));
+    os << ']';
+    return os.str();
+  }
   node.visit([&](const auto& v) {
     if constexpr (toml::is_string<decltype(v)>)
       os << '"' << v.get() << '"';
     else
       os << v;
   });
-  return os.str();
-}
-
-std::string range_text(const Param& p) {
-  std::ostringstream os;
-  os << (p.min_exclusive ? "(" : "[") << p.min << ", " << p.max << "]";
-  if (!p.unit.empty()) os << ' ' << p.unit;
   return os.str();
 }
 
@@ -99,13 +99,16 @@ void assign(const Param& p, const toml::node& node, const std::string& at) {
       p.target);
 }
 
+// The keys one layer of input (the file, or the --set list) gave, and where.
+using Layer = std::map<std::string, std::string>;
+
 void apply_table(const Schema& schema, const toml::table& table, const std::string& prefix,
-                 const std::string& source) {
+                 const std::string& source, Layer& layer) {
   for (const auto& [k, node] : table) {
     const std::string key =
         prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
     if (const auto* sub = node.as_table()) {
-      apply_table(schema, *sub, key, source);
+      apply_table(schema, *sub, key, source, layer);
       continue;
     }
     const Param* p = schema.find(key);
@@ -113,10 +116,11 @@ void apply_table(const Schema& schema, const toml::table& table, const std::stri
       throw SceneError(where(source, node) + ": unknown key '" + key + "'; did you mean '" +
                        schema.nearest(key) + "'?");
     assign(*p, node, where(source, node));
+    layer[key] = where(source, node);
   }
 }
 
-void apply_override(const Schema& schema, const std::string& assignment) {
+void apply_override(const Schema& schema, const std::string& assignment, Layer& layer) {
   auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
     throw SceneError("--set " + assignment + ": expected key=value");
@@ -135,6 +139,23 @@ void apply_override(const Schema& schema, const std::string& assignment) {
     parsed = toml::table{{"v", value}};
   }
   assign(*p, *parsed.get("v"), "--set");
+  layer[key] = "--set";
+}
+
+// Of two exclusive keys, the one a layer gives replaces the other; a layer may not give both.
+void settle_exclusives(const Schema& schema, const Layer& layer) {
+  for (const auto& [a, b] : schema.exclusives()) {
+    const Param& pa = *schema.find(a);
+    const Param& pb = *schema.find(b);
+    const bool gave_a = layer.count(a) && !is_unused(pa);
+    const bool gave_b = layer.count(b) && !is_unused(pb);
+    if (gave_a && gave_b)
+      throw SceneError(layer.at(b) + ": " + b + " = " + format_user_value(pb) + " and " +
+                       layer.at(a) + ": " + a + " = " + format_user_value(pa) +
+                       " are alternatives; give only one of them");
+    if (gave_a) set_unused(pb);
+    if (gave_b) set_unused(pa);
+  }
 }
 
 }  // namespace
@@ -151,9 +172,15 @@ Scene parse_scene(std::string_view text, const std::string& source_name,
     os << source_name << ':' << e.source().begin.line << ": " << e.description();
     throw SceneError(os.str());
   }
-  apply_table(schema, table, "", source_name);
-  for (const auto& o : overrides) apply_override(schema, o);
-  check_scene(scene, source_name);
+  SceneOrigins origins{source_name, {}};
+  Layer from_file, from_set;
+  apply_table(schema, table, "", source_name, from_file);
+  settle_exclusives(schema, from_file);
+  for (const auto& o : overrides) apply_override(schema, o, from_set);
+  settle_exclusives(schema, from_set);
+  origins.at = from_file;
+  for (const auto& [key, at] : from_set) origins.at[key] = at;
+  check_scene(scene, origins);
   return scene;
 }
 

@@ -43,6 +43,11 @@ Param& Schema::list(std::string key, std::vector<double>* target, std::string un
       Param{std::move(key), target, std::move(unit), to_si, min, max, false, {}, std::move(doc)});
 }
 
+void Schema::exclusive(std::string a, std::string b) {
+  if (!find(a) || !find(b)) throw std::logic_error("exclusive keys must be declared first");
+  exclusives_.emplace_back(std::move(a), std::move(b));
+}
+
 const Param* Schema::find(const std::string& key) const {
   auto it =
       std::find_if(params_.begin(), params_.end(), [&](const Param& p) { return p.key == key; });
@@ -100,6 +105,44 @@ std::string format_user_value(const Param& p) {
       },
       p.target);
   return os.str();
+}
+
+std::string range_text(const Param& p) {
+  std::ostringstream os;
+  if (!p.choices.empty()) {
+    for (std::size_t i = 0; i < p.choices.size(); ++i) os << (i ? ", " : "") << p.choices[i];
+    return os.str();
+  }
+  const bool numeric = std::visit(
+      [](auto* v) {
+        using T = std::remove_pointer_t<decltype(v)>;
+        return std::is_same_v<T, double> || std::is_same_v<T, std::int64_t> ||
+               std::is_same_v<T, std::vector<double>>;
+      },
+      p.target);
+  if (std::holds_alternative<bool*>(p.target)) return "true, false";
+  if (!numeric) return "any text";
+  os << (p.min_exclusive ? "(" : "[") << p.min << ", " << p.max << "]";
+  if (!p.unit.empty()) os << ' ' << p.unit;
+  return os.str();
+}
+
+bool is_unused(const Param& p) {
+  return std::visit(
+      [](auto* v) {
+        using T = std::remove_pointer_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, bool>)
+          return !*v;
+        else if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, std::vector<double>>)
+          return v->empty();
+        else
+          return *v == 0;
+      },
+      p.target);
+}
+
+void set_unused(const Param& p) {
+  std::visit([](auto* v) { *v = std::remove_pointer_t<decltype(v)>{}; }, p.target);
 }
 
 }  // namespace sedem

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -40,6 +41,12 @@ class Schema {
   Param& list(std::string key, std::vector<double>* target, std::string unit, double to_si,
               double min, double max, std::string doc);
 
+  // Two alternative keys (say, a count or a fraction): a scene gives at most one of them a
+  // non-zero value, and the other is then 0 ("unused"). Giving one, in the file or in
+  // `--set`, resets the other, so that an override can switch from one to the other.
+  void exclusive(std::string a, std::string b);
+  const std::vector<std::pair<std::string, std::string>>& exclusives() const { return exclusives_; }
+
   const std::vector<Param>& params() const { return params_; }
   const Param* find(const std::string& key) const;
   // The declared key closest to `key` (edit distance), for "did you mean" messages.
@@ -48,9 +55,17 @@ class Schema {
  private:
   Param& add(Param p);
   std::vector<Param> params_;
+  std::vector<std::pair<std::string, std::string>> exclusives_;
 };
 
 // A value as the user sees it (user units), for printing and run.json.
 std::string format_user_value(const Param& p);
+
+// A value in the unit the user writes it: "1e-06, 10] Pa*s" style ranges, "a, b" choices.
+std::string range_text(const Param& p);
+
+// Whether a key holds its "unused" value (0, false, empty), and setting it so.
+bool is_unused(const Param& p);
+void set_unused(const Param& p);
 
 }  // namespace sedem

@@ -62,9 +62,10 @@ TEST(SceneLoader, SetOverridesTheFile) {
 }
 
 TEST(SceneLoader, CrossChecksNameBothKeys) {
-  EXPECT_NE(error_of("[sample]\nparticle_density = 1001\n[fluid]\ndensity = 1500\n")
-                .find("sample.particle_density must exceed fluid.density"),
-            std::string::npos);
+  const std::string e = error_of("[sample]\nparticle_density = 1001\n[fluid]\ndensity = 1500\n");
+  EXPECT_NE(e.find("bad.toml:2: sample.particle_density = 1001 must exceed fluid.density = 1500"),
+            std::string::npos)
+      << e;
 }
 
 TEST(SceneLoader, ResolvedSceneReadsBackTheSame) {

@@ -1,0 +1,79 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "core/sample/sample_builder.h"
+#include "core/scene/scene_loader.h"
+#include "core/scene/schema_doc.h"
+
+namespace sedem {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Every scene shipped in scenes/ loads, and its sample can be built and placed.
+TEST(SceneFiles, AllShippedScenesLoadAndPlace) {
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(SEDEM_SOURCE_DIR) / "scenes")) {
+    if (entry.path().extension() != ".toml") continue;
+    SCOPED_TRACE(entry.path().string());
+    ++count;
+    Scene scene;
+    ASSERT_NO_THROW(scene = load_scene(entry.path()));
+    EXPECT_EQ(scene.name, entry.path().stem().string());
+    const Sample sample = build_sample(scene);
+    EXPECT_EQ(std::int64_t(sample.particles.size()), scene.sample.simulated_count);
+    EXPECT_GT(sample.area_fraction, 0);
+    EXPECT_LE(sample.area_fraction, scene.sample.placement.max_area_fraction);
+  }
+  EXPECT_GE(count, 9);
+}
+
+// The paper's five samples: 60 g, 220 sizes from 2.5 to 70 um, the full 24 h test.
+TEST(SceneFiles, PaperSamplesUseThePapersSettings) {
+  for (int k = 1; k <= 5; ++k) {
+    const Scene s = load_scene(fs::path(SEDEM_SOURCE_DIR) / "scenes" /
+                               ("sample" + std::to_string(k) + ".toml"));
+    EXPECT_DOUBLE_EQ(s.sample.total_mass, 60e-3);
+    EXPECT_EQ(s.sample.size_count, 220);
+    EXPECT_NEAR(s.sample.grading.diameters.front(), 2.5e-6, 1e-18);
+    EXPECT_NEAR(s.sample.grading.diameters.back(), 70e-6, 1e-18);
+    EXPECT_DOUBLE_EQ(s.end_time, 1440 * 60.0);
+  }
+}
+
+std::string read(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// docs/scenes.md carries the key table generated from the Schema. With SEDEM_UPDATE_DOCS=1
+// this test rewrites it instead of comparing.
+TEST(SceneFiles, DocsKeyTableMatchesTheSchema) {
+  const fs::path doc = fs::path(SEDEM_SOURCE_DIR) / "docs" / "scenes.md";
+  std::string text = read(doc);
+  const auto begin = text.find(kKeysBeginMarker);
+  const auto end = text.find(kKeysEndMarker);
+  ASSERT_NE(begin, std::string::npos) << doc << " lacks the marker " << kKeysBeginMarker;
+  ASSERT_NE(end, std::string::npos) << doc << " lacks the marker " << kKeysEndMarker;
+  const auto from = begin + std::string(kKeysBeginMarker).size() + 1;
+  Scene defaults;
+  const std::string table = schema_markdown(defaults);
+  if (std::getenv("SEDEM_UPDATE_DOCS")) {
+    text.replace(from, end - from, table);
+    std::ofstream(doc) << text;
+    GTEST_SKIP() << "rewrote the key table of " << doc;
+  }
+  EXPECT_EQ(text.substr(from, end - from), table)
+      << "docs/scenes.md's key table differs from the scene keys declared in the code. "
+         "Regenerate it: SEDEM_UPDATE_DOCS=1 build/tests/scene/test_scene "
+         "--gtest_filter=SceneFiles.DocsKeyTableMatchesTheSchema";
+}
+
+}  // namespace
+}  // namespace sedem
