@@ -1,9 +1,5 @@
 #include "app/output_observers.h"
 
-#include <cstdio>
-
-#include "render/column_view.h"
-
 namespace sedem::app {
 
 ParticleSeriesObserver::ParticleSeriesObserver(const Scene& scene,
@@ -11,17 +7,21 @@ ParticleSeriesObserver::ParticleSeriesObserver(const Scene& scene,
     : times_(every(scene.output.interval, scene.end_time)),
       writer_(out_dir, scene.sample.particle_density) {}
 
-ColumnFrameObserver::ColumnFrameObserver(const Scene& scene, const std::filesystem::path& out_dir)
-    : scene_(scene),
-      dir_(out_dir / "frames"),
-      times_(every(scene.output.interval, scene.end_time)) {}
+namespace {
 
-void ColumnFrameObserver::observe(const Snapshot& snapshot) {
-  char name[64];
-  std::snprintf(name, sizeof name, "column_%06d.png", count_++);
-  render::render_column_png(snapshot, scene_.cylinder, scene_.name, int(scene_.output.frame_width),
-                            int(scene_.output.frame_height), dir_ / name);
+render::ColumnAnimation::Options animation_options(const Scene& scene) {
+  render::ColumnAnimation::Options o;
+  o.label = scene.name;
+  o.panel_width = int(scene.output.frame_width);
+  o.panel_height = int(scene.output.frame_height);
+  return o;
 }
+
+}  // namespace
+
+ColumnFrameObserver::ColumnFrameObserver(const Scene& scene, const std::filesystem::path& out_dir)
+    : times_(every(scene.output.interval, scene.end_time)),
+      animation_(out_dir, scene.cylinder, animation_options(scene)) {}
 
 std::vector<std::unique_ptr<Observer>> make_observers(const Scene& scene,
                                                       const std::filesystem::path& out_dir) {

@@ -6,6 +6,7 @@
 
 #include "core/observe/observer.h"
 #include "core/scene/scene.h"
+#include "render/column_animation.h"
 #include "render/particle_writer.h"
 
 namespace sedem::app {
@@ -23,19 +24,18 @@ class ParticleSeriesObserver : public Observer {
   render::ParticleSeriesWriter writer_;
 };
 
-// frames/column_NNNNNN.png at every output time.
+// frames/column_NNNNNN.png at every output time: the column as Fig. 11 mass bands with
+// zoom insets, on one grey scale for the whole sequence.
 class ColumnFrameObserver : public Observer {
  public:
   ColumnFrameObserver(const Scene& scene, const std::filesystem::path& out_dir);
   std::string name() const override { return "frames"; }
   std::vector<double> wanted_times() const override { return times_; }
-  void observe(const Snapshot& snapshot) override;
+  void observe(const Snapshot& snapshot) override { animation_.add(snapshot); }
 
  private:
-  Scene scene_;
-  std::filesystem::path dir_;
   std::vector<double> times_;
-  int count_ = 0;
+  render::ColumnAnimation animation_;
 };
 
 // The observers the scene asks for: an output that nothing asks for costs nothing.

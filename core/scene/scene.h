@@ -19,8 +19,8 @@ struct OutputConfig {
   double interval = 10.0;  // s between snapshots (particles, fields, frames)
   bool particles = true;   // particles.pvd series
   bool frames = true;      // PNG of the column per snapshot
-  std::int64_t frame_width = 360;
-  std::int64_t frame_height = 1200;
+  std::int64_t frame_width = 300;
+  std::int64_t frame_height = 720;
 };
 
 // A scene: everything a run needs, validated, in SI units. Defaults are the paper's.
