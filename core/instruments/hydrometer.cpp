@@ -107,6 +107,33 @@ double hydrostatic_force(const HydrometerGeometry& h, const LayerFields& fields,
   return mass * fields.gravity();
 }
 
+double hydrometer_radius(const HydrometerGeometry& h, double z) {
+  if (z < 0 || z > h.length()) return 0.0;
+  for (std::size_t k = 0; k + 1 < h.heights.size(); ++k) {
+    const double z0 = h.heights[k], z1 = h.heights[k + 1];
+    if (z <= z1 && z1 > z0)
+      return h.radii[k] + (h.radii[k + 1] - h.radii[k]) * (z - z0) / (z1 - z0);
+  }
+  return h.radii.back();
+}
+
+double hydrostatic_force_pressure_sum(const HydrometerGeometry& h, const LayerFields& fields,
+                                      std::size_t tip_layers) {
+  const double dh = fields.layer_height();
+  double force = 0;
+  // Layer m spans depths [m h, (m + 1) h]; the tip is at the bottom of layer tip_layers - 1.
+  for (std::size_t m = 0; m < tip_layers; ++m) {
+    const double z_bottom = static_cast<double>(tip_layers - m - 1) * dh;
+    const double z_top = z_bottom + dh;
+    // At the tip the radius is 0 (the cone's apex, or the bottom face of a cylinder).
+    const double b_bottom = m + 1 == tip_layers ? 0.0 : hydrometer_radius(h, z_bottom);
+    const double b_top = hydrometer_radius(h, std::min(z_top, h.length()));
+    if (z_bottom >= h.length()) continue;
+    force += fields.pressure()[m] * std::numbers::pi * (b_top * b_top - b_bottom * b_bottom);
+  }
+  return force;
+}
+
 double tip_depth_in_uniform(const HydrometerGeometry& h, double density) {
   const double volume = h.mass / density;
   if (volume > h.volume_below(h.length()))
@@ -153,6 +180,7 @@ HydrometerReading read_hydrometer(const HydrometerGeometry& h, const LayerFields
   const double bulb_top = r.tip_depth - h.bulb_length;
   r.centre_depth = r.tip_depth - 0.5 * h.bulb_length;
   r.reading = h.reading_at(bulb_top);
+  r.on_scale = bulb_top >= 0 && r.reading >= h.scale_min && r.reading <= h.scale_max;
   r.standard_effective_depth = astm_152h_effective_depth(r.reading);
   r.clear_water_tip_depth = tip_depth_in_uniform(h, s.fluid.density);
   // Eq. 19: r_s = M / (M - A (y_ow - y_o) rho_f).

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "core/fields/layer_fields.h"
@@ -54,6 +55,16 @@ HydrometerGeometry make_hydrometer(const HydrometerDesign& design = {});
 // The vertical hydrostatic force on the hydrometer with its tip at `tip_depth`.
 double hydrostatic_force(const HydrometerGeometry& h, const LayerFields& fields, double tip_depth);
 
+// The same force summed as printed in Sect. 4.5.1 for a tip on a layer boundary
+// (tip_layers h_ly deep): sum_n p^(j-n+1) pi [(b^(n+1))^2 - (b^n)^2], the pressure at each
+// layer's bottom on the change of the horizontal projection across the layer. It differs
+// from hydrostatic_force by O(h_ly) (one-sided pressures); kept to show the two agree.
+double hydrostatic_force_pressure_sum(const HydrometerGeometry& h, const LayerFields& fields,
+                                      std::size_t tip_layers);
+
+// Radius at height z above the tip (0 outside the body).
+double hydrometer_radius(const HydrometerGeometry& h, double z);
+
 // Tip depth in a uniform liquid of `density` (closed form: V_sub = M / rho).
 double tip_depth_in_uniform(const HydrometerGeometry& h, double density);
 
@@ -73,6 +84,7 @@ struct HydrometerReading {
   double diameter = 0;                    // phi_o, Eq. 16 at y_go
   double percent_finer = 0;               // w_o, Eq. 18 with Eq. 19's r_s
   double percent_finer_bulb_density = 0;  // Eq. 17 with the bulb-mean density
+  bool on_scale = true;                   // the reading lies on the printed scale (-5 to 60)
   std::vector<double> profile_offset;     // Fig. 13: distance below the top of the bulb, m
   std::vector<double> profile_density;    // rho_s of the layer there, kg/m^3
 };

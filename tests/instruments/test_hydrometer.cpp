@@ -113,6 +113,27 @@ TEST(Hydrometer, SinksDeeperAsTheSuspensionClears) {
   }
 }
 
+// Sect. 4.5.1's pressure sum and the displaced-weight sum are the same integral (by parts,
+// p = 0 at the surface): they agree to the one-sided pressure's O(h_ly) error, at most one
+// layer's pressure step on the bulb's cross-section, rho g h_ly pi r_b^2 / W
+// = 1015 * 9.81 * 1.1425e-4 * 4.79e-4 / 0.6825 = 8e-4 of the force.
+TEST(Hydrometer, PaperPressureSumAgreesWithDisplacedWeight) {
+  Suspension s;
+  const LayerFields f = testing::fields_with_density([](double d) { return 1000.0 + 100.0 * d; },
+                                                     s.cylinder, s.fluid, 2500.0, 4000);
+  for (double tip_length : {0.0, 0.02}) {
+    HydrometerDesign d;
+    d.tip_length = tip_length;
+    d.shoulder_length = tip_length;
+    const HydrometerGeometry h = make_hydrometer(d);
+    for (std::size_t j : {1500u, 1800u, 2100u}) {
+      const double exact = hydrostatic_force(h, f, double(j) * f.layer_height());
+      const double summed = hydrostatic_force_pressure_sum(h, f, j);
+      EXPECT_NEAR(summed, exact, 8e-4 * exact) << tip_length << " " << j;
+    }
+  }
+}
+
 TEST(Hydrometer, StandardEffectiveDepth) {
   EXPECT_NEAR(astm_152h_effective_depth(0), 0.1629, 1e-15);
   EXPECT_NEAR(astm_152h_effective_depth(50), 0.0809, 1e-15);
