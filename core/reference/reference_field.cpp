@@ -77,6 +77,14 @@ double ReferenceSolution::concentration(double depth, double time) const {
   return c_sum;
 }
 
+double ReferenceSolution::largest_diameter_above(double depth, double time) const {
+  const double limit = std::min(depth, bed_top(time));
+  double largest = 0;
+  for (const auto& c : classes_)
+    if (c.velocity * time < limit && c.concentration > 0) largest = std::max(largest, c.diameter);
+  return largest;
+}
+
 std::vector<double> ReferenceSolution::layer_solid_volume(double time, std::size_t layers) const {
   if (layers == 0) throw std::invalid_argument("reference solution: zero layers");
   const double top = bed_top(time);

@@ -50,6 +50,9 @@ class ReferenceSolution {
   double bed_top(double time) const;
   // Concentration of solids at `depth` and `time`, kg/m^3.
   double concentration(double depth, double time) const;
+  // Fig. 12 for the continuum: the largest class diameter present anywhere above `depth`
+  // (classes whose upper front u_n t is above it); 0 if none.
+  double largest_diameter_above(double depth, double time) const;
   // Solid volume in each of `layers` layers of the section (exact overlaps).
   std::vector<double> layer_solid_volume(double time, std::size_t layers) const;
   LayerFields layer_fields(double time, std::size_t layers, const Fluid& fluid) const;

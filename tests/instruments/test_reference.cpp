@@ -67,6 +67,10 @@ TEST(Reference, TwoSizesMatchClosedForm) {
   EXPECT_NEAR(f.concentration()[150], 20.0, 1e-9);
   EXPECT_NEAR(f.concentration()[196], 20.0 + 20.0 * 0.8, 1e-9);  // front at 196.2 mm
   EXPECT_NEAR(f.concentration()[300], 40.0, 1e-9);
+  // Fig. 12: above 0.03 m nothing; above 0.10 m the 10 um class; above 0.30 m both.
+  EXPECT_DOUBLE_EQ(ref.largest_diameter_above(0.03, t), 0.0);
+  EXPECT_DOUBLE_EQ(ref.largest_diameter_above(0.10, t), 10e-6);
+  EXPECT_DOUBLE_EQ(ref.largest_diameter_above(0.30, t), 20e-6);
   // Eq. 20: clear liquid above, 1000 + 0.6 * 40 below both fronts.
   EXPECT_NEAR(f.density()[10], 1000.0, 1e-9);
   EXPECT_NEAR(f.density()[300], 1024.0, 1e-9);
