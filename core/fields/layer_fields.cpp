@@ -16,8 +16,9 @@ namespace {
 // is lost.
 std::size_t clamp_index(double depth, double thickness, std::size_t count) {
   const double k = std::floor(depth / thickness);
-  if (!(k > 0)) return 0;
-  return std::min(count - 1, static_cast<std::size_t>(k));
+  if (!(k > 0)) return 0;  // also NaN
+  if (k >= static_cast<double>(count - 1)) return count - 1;
+  return static_cast<std::size_t>(k);
 }
 
 }  // namespace
