@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
-#include <iomanip>
 #include <optional>
 #include <sstream>
 
@@ -75,12 +74,18 @@ std::vector<LabReading> read_lab_readings_csv(std::istream& in) {
 }
 
 void write_lab_points_csv(std::ostream& out, const std::vector<LabPoint>& points) {
-  out << std::setprecision(17);
+  // The shortest text that reads back as the same double.
+  auto num = [](double v) {
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return std::string(buffer, result.ptr);
+  };
   out << "time_s,diameter_m,percent_finer,corrected_reading_g_per_l,effective_depth_m,"
          "viscosity_pa_s\n";
   for (const auto& p : points)
-    out << p.time << ',' << p.diameter << ',' << p.percent_finer << ',' << p.corrected_reading
-        << ',' << p.effective_depth << ',' << p.viscosity << '\n';
+    out << num(p.time) << ',' << num(p.diameter) << ',' << num(p.percent_finer) << ','
+        << num(p.corrected_reading) << ',' << num(p.effective_depth) << ',' << num(p.viscosity)
+        << '\n';
 }
 
 }  // namespace sedem
