@@ -84,7 +84,7 @@ struct LargestDiameterProfile {
   double time = 0;
   std::vector<double> depth;     // bottom of each layer, m
   std::vector<double> largest;   // m; 0 where no particle is above
-  std::vector<double> limiting;  // Eq. 16, m
+  std::vector<double> limiting;  // Eq. 16, m (0 at time 0, where it is undefined)
 };
 
 LargestDiameterProfile largest_diameter_profile(const Particles& particles,
