@@ -26,6 +26,16 @@ void describe(InstrumentsConfig& c, Schema& s) {
            "Volume drawn from the whole cylinder (paper: 35 mL).");
   s.list("instruments.pipette.times_min", &c.pipette_times, "min", 60, 1e-6, 1e6,
          "Sampling times (the paper gives none; default: the buoyancy test's).");
+  s.number("instruments.hydrometer.tip_length_cm", &c.hydrometer_tip_length, "cm", 1e-2, 0, 7,
+           "Length of the bulb's bottom cone (shape only; length and volume are the 152H's).");
+  s.number("instruments.hydrometer.shoulder_length_cm", &c.hydrometer_shoulder_length, "cm", 1e-2,
+           0, 7, "Length of the cone from the bulb to the stem.");
+  s.flag("instruments.reference.hindered", &c.reference_hindered,
+         "Reference solution: Richardson-Zaki hindered settling at the initial solid fraction.");
+  s.number("instruments.reference.richardson_zaki_exponent", &c.reference_richardson_zaki_exponent,
+           "", 1, 0, 10, "Richardson-Zaki exponent n (4.65 in the Stokes regime).");
+  s.number("instruments.reference.bed_packing", &c.reference_bed_packing, "", 1, 0.05, 1,
+           "Solid fraction of the reference's bed at the bottom.");
 }
 
 }  // namespace sedem

@@ -24,6 +24,15 @@ struct InstrumentsConfig {
   double pipette_depth_fraction = 0.3;
   double pipette_volume = 35e-6;  // m^3 of the whole cylinder
   std::vector<double> pipette_times{30, 60, 120, 240, 900, 1800, 3600, 7200, 14400, 28800};
+
+  // Shape of the 152H bulb's ends (the published data fix its length and volume only).
+  double hydrometer_tip_length = 0.020;       // m
+  double hydrometer_shoulder_length = 0.020;  // m
+
+  // The continuum reference solution.
+  bool reference_hindered = false;
+  double reference_richardson_zaki_exponent = 4.65;
+  double reference_bed_packing = 0.6;
 };
 
 void describe(InstrumentsConfig& config, Schema& schema);

@@ -1,0 +1,54 @@
+#pragma once
+
+#include <vector>
+
+#include "core/instruments/granulometry.h"
+#include "core/model/particles.h"
+#include "core/model/sample.h"
+
+namespace sedem {
+
+struct Scene;
+
+// The enabled tests of a scene, set up from its InstrumentsConfig, reading a field or the
+// particles at their times. It never modifies what it reads.
+class InstrumentPanel {
+ public:
+  InstrumentPanel(const Scene& scene, const Sample& sample);
+
+  const Suspension& suspension() const { return suspension_; }
+  const HydrometerGeometry& hydrometer() const { return hydrometer_; }
+  const BuoyancySphere& sphere() const { return sphere_; }
+  const Pipette& pipette() const { return pipette_; }
+  std::size_t layers() const { return layers_; }
+
+  // Every time at which an enabled test reads, ascending, without repeats, s.
+  std::vector<double> reading_times() const;
+
+  // Takes every reading due at `time` from the particles at that time (the engine must
+  // stop there). The hydrometer and the sphere read the layer fields of Eq. 20, the
+  // pipette its sampling circle.
+  void observe(double time, const Particles& particles);
+  // The same from a field uniform across the section (the pipette reads it by layers).
+  void observe(double time, const LayerFields& fields);
+
+  // The tests read so far, enabled ones only, in the order hydrometer, buoyancy, pipette.
+  std::vector<TestReadings> readings() const;
+  const std::vector<HydrometerReading>& hydrometer_readings() const { return hydrometer_readings_; }
+
+ private:
+  void read_fields(double time, const LayerFields& fields);
+
+  bool hydrometer_on_, buoyancy_on_, pipette_on_;
+  std::vector<double> hydrometer_times_, buoyancy_times_, pipette_times_;
+  std::size_t layers_;
+  Suspension suspension_;
+  HydrometerGeometry hydrometer_;
+  BuoyancySphere sphere_;
+  Pipette pipette_;
+  std::vector<HydrometerReading> hydrometer_readings_;
+  std::vector<BuoyancyReading> buoyancy_readings_;
+  std::vector<PipetteReading> pipette_readings_;
+};
+
+}  // namespace sedem

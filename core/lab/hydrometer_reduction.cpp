@@ -1,0 +1,118 @@
+#include "core/lab/hydrometer_reduction.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/lab/water.h"
+
+namespace sedem {
+
+namespace {
+
+std::string describe_invalid(std::size_t row, const std::string& field, double value,
+                             const std::string& why) {
+  std::ostringstream s;
+  if (row == InvalidLabReading::kSpecimen)
+    s << "specimen";
+  else
+    s << "row " << row + 1;
+  s << ", " << field << " = " << value << ": " << why;
+  return s.str();
+}
+
+// 152H: the D422 effective depth, cm.
+double effective_depth_cm(double reading) {
+  return 16.29 - 0.164 * reading;
+}
+
+// D422's a: the 152H reads g/L of Gs = 2.65 soil.
+double specific_gravity_factor(double gs) {
+  return 1.65 * gs / ((gs - 1.0) * 2.65);
+}
+
+double percent_finer(const LabReading& r, const LabSpecimen& s) {
+  const double dry_mass_g = s.dry_mass * 1e3;
+  return (r.reading - r.composite_correction) * specific_gravity_factor(s.specific_gravity) /
+         dry_mass_g * 100.0;
+}
+
+}  // namespace
+
+InvalidLabReading::InvalidLabReading(std::size_t row, std::string field, double value,
+                                     const std::string& why)
+    : std::invalid_argument(describe_invalid(row, field, value, why)),
+      row_(row),
+      field_(std::move(field)),
+      value_(value) {}
+
+void validate_lab_readings(const std::vector<LabReading>& readings, const LabSpecimen& s) {
+  const std::size_t n = readings.size();
+  constexpr auto kSpecimen = InvalidLabReading::kSpecimen;
+  if (!(s.dry_mass > 0))
+    throw InvalidLabReading(kSpecimen, "dry_mass_kg", s.dry_mass, "the dry mass must be positive");
+  if (!(s.specific_gravity > 1))
+    throw InvalidLabReading(kSpecimen, "specific_gravity", s.specific_gravity,
+                            "the soil must be denser than water (Gs > 1)");
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& r = readings[i];
+    if (!(r.time > 0)) throw InvalidLabReading(i, "time_s", r.time, "times must be positive");
+    if (i > 0 && !(r.time > readings[i - 1].time))
+      throw InvalidLabReading(
+          i, "time_s", r.time,
+          "times must increase (previous row: " + std::to_string(readings[i - 1].time) + " s)");
+    if (!(r.reading >= -5 && r.reading <= 60))
+      throw InvalidLabReading(i, "reading_g_per_l", r.reading, "off the 152H scale (-5 to 60 g/L)");
+    if (!(r.temperature >= 0 && r.temperature <= 40))
+      throw InvalidLabReading(i, "temperature_c", r.temperature,
+                              "outside 0-40 C, where the water density formula holds");
+    if (!std::isfinite(r.composite_correction))
+      throw InvalidLabReading(i, "composite_correction_g_per_l", r.composite_correction,
+                              "must be a finite number");
+  }
+}
+
+std::vector<LabPoint> reduce_astm_d422(const std::vector<LabReading>& readings,
+                                       const LabSpecimen& s) {
+  validate_lab_readings(readings, s);
+  std::vector<LabPoint> out;
+  for (const auto& r : readings) {
+    LabPoint p;
+    p.time = r.time;
+    p.viscosity = water::viscosity(r.temperature);
+    const double eta_poise = 10.0 * p.viscosity;
+    // G1: the water's specific gravity against water at 4 C (1000 kg/m^3 to 0.003 %).
+    const double g1 = water::density(r.temperature) / 1000.0;
+    const double k = std::sqrt(30.0 * eta_poise / (980.0 * (s.specific_gravity - g1)));
+    const double depth_cm = effective_depth_cm(r.reading);
+    const double time_min = r.time / 60.0;
+    p.diameter = k * std::sqrt(depth_cm / time_min) * 1e-3;  // mm -> m
+    p.effective_depth = depth_cm * 1e-2;
+    p.corrected_reading = r.reading - r.composite_correction;
+    p.percent_finer = percent_finer(r, s);
+    out.push_back(p);
+  }
+  return out;
+}
+
+std::vector<LabPoint> reduce_astm_d7928(const std::vector<LabReading>& readings,
+                                        const LabSpecimen& s) {
+  validate_lab_readings(readings, s);
+  constexpr double g = 9.80665;
+  const double rho_solids = s.specific_gravity * water::density(20.0);
+  std::vector<LabPoint> out;
+  for (const auto& r : readings) {
+    LabPoint p;
+    p.time = r.time;
+    p.viscosity = water::viscosity(r.temperature);
+    p.effective_depth = effective_depth_cm(r.reading) * 1e-2;
+    const double rho_w = water::density(r.temperature);
+    p.diameter =
+        std::sqrt(18.0 * p.viscosity * p.effective_depth / ((rho_solids - rho_w) * g * r.time));
+    p.corrected_reading = r.reading - r.composite_correction;
+    p.percent_finer = percent_finer(r, s);
+    out.push_back(p);
+  }
+  return out;
+}
+
+}  // namespace sedem

@@ -1,0 +1,67 @@
+#pragma once
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace sedem {
+
+// One hydrometer reading of a laboratory test (152H), SI except the reading.
+struct LabReading {
+  double time = 0;                  // s since the start of sedimentation
+  double reading = 0;               // R, g/L, as read at the top of the meniscus corrected
+  double temperature = 20;          // deg C of the suspension
+  double composite_correction = 0;  // g/L: zero, meniscus, dispersant and temperature
+};
+
+// The specimen the readings belong to.
+struct LabSpecimen {
+  double specific_gravity = 2.65;  // Gs of the soil solids (at 20 C)
+  double dry_mass = 50e-3;         // W, kg oven-dry
+};
+
+struct LabPoint {
+  double time = 0;               // s
+  double diameter = 0;           // m
+  double percent_finer = 0;      // %
+  double corrected_reading = 0;  // R - composite correction, g/L
+  double effective_depth = 0;    // L, m
+  double viscosity = 0;          // Pa*s at the reading's temperature
+};
+
+// A reading that cannot be reduced: names the row, the field and the value. row() is
+// 0-based (kSpecimen for the specimen's fields); the message counts rows from 1.
+class InvalidLabReading : public std::invalid_argument {
+ public:
+  static constexpr std::size_t kSpecimen = static_cast<std::size_t>(-1);
+  InvalidLabReading(std::size_t row, std::string field, double value, const std::string& why);
+  std::size_t row() const { return row_; }
+  const std::string& field() const { return field_; }
+  double value() const { return value_; }
+
+ private:
+  std::size_t row_;
+  std::string field_;
+  double value_;
+};
+
+// ASTM D422 with the 152H: D = K sqrt(L / T) (mm, cm, min),
+// K = sqrt(30 eta / (980 (Gs - G1))) with eta in poise and G1 the specific gravity of the
+// water at the test temperature, L = 16.29 - 0.164 R cm, P = (R - C) a / W 100 with
+// a = 1.65 Gs / ((Gs - 1) 2.65).
+std::vector<LabPoint> reduce_astm_d422(const std::vector<LabReading>& readings,
+                                       const LabSpecimen& specimen);
+
+// ASTM D7928 form: Stokes' law in SI, D = sqrt(18 mu(T) H_m / ((rho_s - rho_w(T)) g t)),
+// rho_s = Gs rho_w(20 C), g = 9.80665 m/s^2, H_m the 152H's effective depth; the percent
+// finer N = Gs / (Gs - 1) (V_sp / M_d) rho_c (r - r_d) 100, which for a 152H reading in g/L
+// of Gs = 2.65 soil is D422's (R - C) a / W 100.
+std::vector<LabPoint> reduce_astm_d7928(const std::vector<LabReading>& readings,
+                                        const LabSpecimen& specimen);
+
+// Checks what both reductions need: positive, increasing times; readings on the -5..60
+// scale; temperatures in 0-40 C; Gs > 1; positive dry mass. Throws InvalidLabReading.
+void validate_lab_readings(const std::vector<LabReading>& readings, const LabSpecimen& specimen);
+
+}  // namespace sedem

@@ -1,0 +1,91 @@
+#include "core/lab/lab_csv.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <optional>
+#include <sstream>
+
+namespace sedem {
+
+namespace {
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> cells;
+  std::string cell;
+  std::istringstream s(line);
+  while (std::getline(s, cell, ',')) {
+    const auto first = cell.find_first_not_of(" \t\r");
+    const auto last = cell.find_last_not_of(" \t\r");
+    cells.push_back(first == std::string::npos ? "" : cell.substr(first, last - first + 1));
+  }
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
+}
+
+bool blank(const std::string& line) {
+  return line.find_first_not_of(" \t\r") == std::string::npos;
+}
+
+}  // namespace
+
+LabCsvError::LabCsvError(std::size_t line, const std::string& column, const std::string& why)
+    : std::invalid_argument("line " + std::to_string(line) +
+                            (column.empty() ? "" : ", column " + column) + ": " + why),
+      line_(line) {}
+
+std::vector<LabReading> read_lab_readings_csv(std::istream& in) {
+  const std::array<std::string, 4> names{"time_min", "reading_g_per_l", "temperature_c",
+                                         "composite_correction_g_per_l"};
+  std::string line;
+  std::size_t number = 0;
+  std::vector<std::string> header;
+  while (header.empty() && std::getline(in, line)) {
+    ++number;
+    if (!blank(line)) header = split(line);
+  }
+  if (header.empty()) throw LabCsvError(number, "", "no header");
+  std::array<std::optional<std::size_t>, 4> column;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    auto it = std::find(header.begin(), header.end(), names[k]);
+    if (it != header.end())
+      column[k] = std::size_t(it - header.begin());
+    else if (k < 3)
+      throw LabCsvError(number, names[k], "missing from the header");
+  }
+  std::vector<LabReading> readings;
+  while (std::getline(in, line)) {
+    ++number;
+    if (blank(line)) continue;
+    const auto cells = split(line);
+    std::array<double, 4> v{0, 0, 0, 0};
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      if (!column[k]) continue;
+      if (*column[k] >= cells.size()) throw LabCsvError(number, names[k], "missing value");
+      const std::string& text = cells[*column[k]];
+      const char* end = text.data() + text.size();
+      auto [ptr, ec] = std::from_chars(text.data(), end, v[k]);
+      if (ec != std::errc() || ptr != end || text.empty())
+        throw LabCsvError(number, names[k], "'" + text + "' is not a number");
+    }
+    readings.push_back({v[0] * 60.0, v[1], v[2], v[3]});
+  }
+  return readings;
+}
+
+void write_lab_points_csv(std::ostream& out, const std::vector<LabPoint>& points) {
+  // The shortest text that reads back as the same double.
+  auto num = [](double v) {
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return std::string(buffer, result.ptr);
+  };
+  out << "time_s,diameter_m,percent_finer,corrected_reading_g_per_l,effective_depth_m,"
+         "viscosity_pa_s\n";
+  for (const auto& p : points)
+    out << num(p.time) << ',' << num(p.diameter) << ',' << num(p.percent_finer) << ','
+        << num(p.corrected_reading) << ',' << num(p.effective_depth) << ',' << num(p.viscosity)
+        << '\n';
+}
+
+}  // namespace sedem

@@ -1,0 +1,19 @@
+#pragma once
+
+#include <vector>
+
+#include "core/instruments/granulometry.h"
+#include "core/reference/reference_field.h"
+
+namespace sedem {
+
+struct Scene;
+
+// The scene's reference options from its InstrumentsConfig.
+ReferenceOptions reference_options(const Scene& scene);
+
+// Every enabled test of the scene applied to the reference solution at its times, with the
+// same instrument models as the DEM run.
+std::vector<TestReadings> reference_readings(const Scene& scene, const Sample& sample);
+
+}  // namespace sedem
