@@ -23,10 +23,6 @@ std::size_t clamp_index(double depth, double thickness, std::size_t count) {
 
 }  // namespace
 
-double grain_mass(double diameter, double particle_density) {
-  return particle_density * std::numbers::pi / 6.0 * diameter * diameter * diameter;
-}
-
 LayerFields::LayerFields(std::vector<double> solid_volume, const Cylinder& cylinder,
                          const Fluid& fluid, double particle_density)
     : height_(cylinder.height),

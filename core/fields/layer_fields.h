@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/model/grain.h"
+
 #include <cstddef>
 #include <vector>
 
@@ -57,9 +59,6 @@ class LayerFields {
   // moments_[k][j] = integral of rho_s d^k over depths [0, j h_ly], k = 0, 1, 2.
   std::vector<double> moments_[3];
 };
-
-// Mass of one grain.
-double grain_mass(double diameter, double particle_density);
 
 // Eq. 20 from the weighted particles, O(N + n_ly). Each simulated particle puts the volume
 // of its `weight` real grains in the layer its centre is in (see docs/instruments.md).

@@ -7,10 +7,6 @@
 
 namespace sedem {
 
-double grain_mass(double diameter, double particle_density) {
-  return particle_density * std::numbers::pi / 6.0 * diameter * diameter * diameter;
-}
-
 std::vector<double> discrete_diameters(const GradingCurve& curve, std::int64_t size_count) {
   const double d0 = curve.min_diameter(), d1 = curve.max_diameter();
   if (d0 == d1) return {d0};

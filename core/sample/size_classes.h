@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/model/grain.h"
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -40,7 +42,5 @@ std::int64_t count_for_mass_fraction(const std::vector<SizeClass>& classes,
 // is then that size's real mass in the section.
 void assign_counts(std::vector<SizeClass>& classes, const std::vector<double>& shares,
                    std::int64_t total);
-
-double grain_mass(double diameter, double particle_density);
 
 }  // namespace sedem

@@ -42,17 +42,17 @@ TEST(Cli, DemoRunWritesAReadableSeriesAndANonBlankFrame) {
   reader->Update();
   EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), run["particle_count"].get<int>());
 
-  // A frame is not blank: a good share of its pixels are neither white nor the outline.
+  // A frame is not blank: the column's grey bands cover a good share of it.
   auto image = render::read_png(out / "frames/column_000000.png");
   int dims[3];
   image->GetDimensions(dims);
-  long coloured = 0;
+  long inked = 0;
   for (int y = 0; y < dims[1]; ++y)
     for (int x = 0; x < dims[0]; ++x) {
       auto* px = static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
-      if (px[0] != px[1] || px[1] != px[2]) ++coloured;
+      if (px[0] < 240 || px[1] < 240 || px[2] < 240) ++inked;
     }
-  EXPECT_GT(coloured, 1000);
+  EXPECT_GT(inked, long(dims[0]) * dims[1] / 10);
 }
 
 TEST(Cli, HelpForEveryCommand) {
