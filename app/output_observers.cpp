@@ -1,11 +1,12 @@
 #include "app/output_observers.h"
 
+#include "core/fields/layer_fields.h"
+
 namespace sedem::app {
 
-ParticleSeriesObserver::ParticleSeriesObserver(const Scene& scene,
+ParticleSeriesObserver::ParticleSeriesObserver(std::vector<double> times, const Scene& scene,
                                                const std::filesystem::path& out_dir)
-    : times_(every(scene.output.interval, scene.end_time)),
-      writer_(out_dir, scene.sample.particle_density) {}
+    : times_(std::move(times)), writer_(out_dir, scene.sample.particle_density) {}
 
 namespace {
 
@@ -23,14 +24,39 @@ ColumnFrameObserver::ColumnFrameObserver(const Scene& scene, const std::filesyst
     : times_(every(scene.output.interval, scene.end_time)),
       animation_(out_dir, scene.cylinder, animation_options(scene)) {}
 
-std::vector<std::unique_ptr<Observer>> make_observers(const Scene& scene,
-                                                      const std::filesystem::path& out_dir) {
-  std::vector<std::unique_ptr<Observer>> observers;
-  if (scene.output.particles)
-    observers.push_back(std::make_unique<ParticleSeriesObserver>(scene, out_dir));
-  if (scene.output.frames)
-    observers.push_back(std::make_unique<ColumnFrameObserver>(scene, out_dir));
-  return observers;
+FieldsObserver::FieldsObserver(const Scene& scene, const std::filesystem::path& out_dir)
+    : scene_(scene), times_(every(scene.output.interval, scene.end_time)), writer_(out_dir) {}
+
+void FieldsObserver::observe(const Snapshot& snapshot) {
+  const LayerFields f =
+      compute_layer_fields(snapshot.particles, scene_.cylinder, scene_.fluid,
+                           scene_.sample.particle_density, std::size_t(scene_.instruments.layers));
+  render::LayerFields out;
+  out.time_s = snapshot.time;
+  out.column_height_m = scene_.cylinder.height;
+  out.section_width_m = scene_.cylinder.diameter;
+  out.suspension_density_kg_m3 = f.density();
+  out.concentration_kg_m3 = f.concentration();
+  writer_.write(out);
+}
+
+RunObservers make_observers(const Scene& scene, const Sample& sample,
+                            const std::filesystem::path& out_dir, bool with_particle_files) {
+  RunObservers r;
+  const auto& ins = scene.instruments;
+  if (ins.hydrometer || ins.buoyancy || ins.pipette) {
+    auto instruments = std::make_unique<InstrumentObserver>(scene, sample);
+    r.instruments = instruments.get();
+    r.all.push_back(std::move(instruments));
+  }
+  if (scene.output.particles && with_particle_files) {
+    std::vector<std::vector<double>> lists{every(scene.output.interval, scene.end_time)};
+    if (r.instruments) lists.push_back(r.instruments->wanted_times());
+    r.all.push_back(std::make_unique<ParticleSeriesObserver>(merge_times(lists), scene, out_dir));
+  }
+  if (scene.output.fields) r.all.push_back(std::make_unique<FieldsObserver>(scene, out_dir));
+  if (scene.output.frames) r.all.push_back(std::make_unique<ColumnFrameObserver>(scene, out_dir));
+  return r;
 }
 
 }  // namespace sedem::app

@@ -4,17 +4,21 @@
 #include <memory>
 #include <vector>
 
+#include "core/observe/instrument_observer.h"
 #include "core/observe/observer.h"
 #include "core/scene/scene.h"
 #include "render/column_animation.h"
+#include "render/field_writer.h"
 #include "render/particle_writer.h"
 
 namespace sedem::app {
 
-// particles.pvd + particles/*.vtp at every output time.
+// particles.pvd + particles/*.vtp at every output time and every instrument time, so that
+// `sedem render` can take every reading again from the files.
 class ParticleSeriesObserver : public Observer {
  public:
-  ParticleSeriesObserver(const Scene& scene, const std::filesystem::path& out_dir);
+  ParticleSeriesObserver(std::vector<double> times, const Scene& scene,
+                         const std::filesystem::path& out_dir);
   std::string name() const override { return "particles"; }
   std::vector<double> wanted_times() const override { return times_; }
   void observe(const Snapshot& snapshot) override { writer_.write(snapshot); }
@@ -38,8 +42,28 @@ class ColumnFrameObserver : public Observer {
   render::ColumnAnimation animation_;
 };
 
-// The observers the scene asks for: an output that nothing asks for costs nothing.
-std::vector<std::unique_ptr<Observer>> make_observers(const Scene& scene,
-                                                      const std::filesystem::path& out_dir);
+// fields.pvd + fields/*.vti at every output time: the layer density and concentration.
+class FieldsObserver : public Observer {
+ public:
+  FieldsObserver(const Scene& scene, const std::filesystem::path& out_dir);
+  std::string name() const override { return "fields"; }
+  std::vector<double> wanted_times() const override { return times_; }
+  void observe(const Snapshot& snapshot) override;
+
+ private:
+  Scene scene_;
+  std::vector<double> times_;
+  render::FieldSeriesWriter writer_;
+};
+
+// The observers a scene asks for: an output that nothing asks for costs nothing.
+struct RunObservers {
+  std::vector<std::unique_ptr<Observer>> all;
+  InstrumentObserver* instruments = nullptr;  // in `all`; null when no test is enabled
+};
+
+// `with_particle_files`: false when the snapshots come from files already (sedem render).
+RunObservers make_observers(const Scene& scene, const Sample& sample,
+                            const std::filesystem::path& out_dir, bool with_particle_files = true);
 
 }  // namespace sedem::app

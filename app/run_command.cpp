@@ -14,6 +14,7 @@
 #include "app/progress.h"
 #include "app/run_record.h"
 #include "app/stop_signals.h"
+#include "app/test_outputs.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
 
@@ -65,15 +66,16 @@ int run(const RunOptions& options) {
                 scene.name.c_str(), sample.particles.size(), sample.classes.size(), scene.end_time,
                 out.c_str());
 
-  Engine engine(scene, std::move(sample));
-  std::vector<std::unique_ptr<Observer>> observers;
+  RunObservers run_observers;
   try {
-    observers = make_observers(scene, out);
+    run_observers = make_observers(scene, sample, out);
   } catch (const std::exception& e) {
     std::cerr << "sedem: cannot prepare the outputs in " << out << ": " << e.what() << '\n';
     return exit_code::output_unwritable;
   }
 
+  auto& observers = run_observers.all;
+  Engine engine(scene, std::move(sample));
   EngineWorker worker(engine, schedule_of(observers, scene.end_time));
   QThread thread;
   worker.moveToThread(&thread);
@@ -120,7 +122,15 @@ int run(const RunOptions& options) {
   thread.wait();
   progress.done();
 
-  for (auto& o : observers) o->finish();
+  try {
+    for (auto& o : observers) o->finish();
+    if (run_observers.instruments)
+      record.results = write_test_outputs(scene, run_observers.instruments->results(),
+                                          run_observers.instruments->hydrometer(), out);
+  } catch (const std::exception& e) {
+    record.message = std::string("writing the test results failed: ") + e.what();
+    if (status == exit_code::ok || status == exit_code::interrupted) status = exit_code::io_failure;
+  }
   record.status = status == exit_code::ok            ? "complete"
                   : status == exit_code::interrupted ? "interrupted"
                                                      : "failed";

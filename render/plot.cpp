@@ -117,7 +117,8 @@ vtkSmartPointer<vtkChartXY> make_chart(const Plot& plot,
   style_axis(chart->GetAxis(vtkAxis::BOTTOM), plot.x, plot, true);
   style_axis(chart->GetAxis(vtkAxis::LEFT), plot.y, plot, false);
   for (const auto& s : plot.series) {
-    const bool points = s.style == SeriesStyle::points;
+    // A line needs two points; a series of one is drawn as a marker.
+    const bool points = s.style == SeriesStyle::points || s.x.size() < 2;
     vtkPlot* p = chart->AddPlot(points ? vtkChart::POINTS : vtkChart::LINE);
     p->SetInputData(series_table(s, plot.x.log, plot.y.log), 0, 1);
     p->SetLabel(s.name);

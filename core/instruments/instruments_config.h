@@ -10,6 +10,8 @@ class Schema;
 // The three laboratory tests of Sect. 4.5 and the layered field they read (Eq. 20).
 struct InstrumentsConfig {
   std::int64_t layers = 4000;  // n_ly
+  // Fig. 12: times of the largest-diameter-above-depth profiles (paper: 60, 120, 300, 900 s).
+  std::vector<double> profile_times{60, 120, 300, 900};
 
   bool hydrometer = true;
   std::vector<double> hydrometer_times{120, 300, 900, 1800, 3600, 15000, 86400};  // s

@@ -22,6 +22,8 @@ static void describe(OutputConfig& o, Schema& s) {
            "Simulated time between snapshots.");
   s.flag("output.particles", &o.particles, "Write the particles.pvd series for ParaView.");
   s.flag("output.frames", &o.frames, "Render a PNG of the column at every snapshot.");
+  s.flag("output.fields", &o.fields,
+         "Write fields.pvd: layer suspension density and concentration at every snapshot.");
   s.integer("output.frame_width", &o.frame_width, 16, 8192, "Frame width, pixels.");
   s.integer("output.frame_height", &o.frame_height, 16, 8192, "Frame height, pixels.");
 }

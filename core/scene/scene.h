@@ -19,6 +19,7 @@ struct OutputConfig {
   double interval = 10.0;  // s between snapshots (particles, fields, frames)
   bool particles = true;   // particles.pvd series
   bool frames = true;      // PNG of the column per snapshot
+  bool fields = true;      // fields.pvd: layer density and concentration per snapshot
   std::int64_t frame_width = 300;
   std::int64_t frame_height = 720;
 };

@@ -1,0 +1,149 @@
+#include "app/figure_inputs.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace sedem::app {
+namespace {
+
+const TestComparison* find_test(const TestResults& r, const std::string& test) {
+  for (const auto& t : r.granulometry.tests)
+    if (t.test == test && !t.dem.rows.empty()) return &t;
+  return nullptr;
+}
+
+std::size_t column(const TestReadings& t, const std::string& name) {
+  auto it = std::find(t.extra_columns.begin(), t.extra_columns.end(), name);
+  if (it == t.extra_columns.end())
+    throw std::logic_error(t.test + " readings have no column " + name);
+  return std::size_t(it - t.extra_columns.begin());
+}
+
+render::GradingCurve curve(const std::string& name, const TestReadings& t) {
+  render::GradingCurve c{name, {}, {}};
+  for (const auto& row : t.rows) {
+    c.diameter_m.push_back(row.diameter);
+    c.percent_finer.push_back(row.percent_finer);
+  }
+  return c;
+}
+
+}  // namespace
+
+render::LargestDiameterInput fig12_input(const std::vector<LabelledResults>& runs) {
+  render::LargestDiameterInput in;
+  for (const auto& run : runs) {
+    render::SampleDiameterProfiles s{run.label, {}};
+    for (const auto& p : run.results.profiles) s.profiles.push_back({p.time, p.depth, p.largest});
+    if (!s.profiles.empty()) in.samples.push_back(std::move(s));
+    in.column_height_m = run.column_height;
+    in.particle_density = run.particle_density;
+  }
+  return in;
+}
+
+std::vector<render::SampleBulbDensity> fig13_input(const std::vector<LabelledResults>& runs) {
+  std::vector<render::SampleBulbDensity> out;
+  for (const auto& run : runs) {
+    render::SampleBulbDensity s{run.label, {}};
+    for (const auto& h : run.results.hydrometer)
+      s.profiles.push_back({h.time, h.profile_offset, h.profile_density});
+    if (!s.profiles.empty()) out.push_back(std::move(s));
+  }
+  return out;
+}
+
+std::vector<render::BulbAverageSeries> fig14_input(const std::vector<LabelledResults>& runs) {
+  std::vector<render::BulbAverageSeries> out;
+  for (const auto& run : runs) {
+    render::BulbAverageSeries s{run.label, {}, {}, {}};
+    for (const auto& h : run.results.hydrometer) {
+      s.time_s.push_back(h.time);
+      s.simulated_kg_m3.push_back(h.bulb_mean_density);
+      s.eq19_kg_m3.push_back(h.density_eq19);
+    }
+    if (!s.time_s.empty()) out.push_back(std::move(s));
+  }
+  return out;
+}
+
+std::vector<render::HydrometerSeries> fig15_input(const std::vector<LabelledResults>& runs) {
+  std::vector<render::HydrometerSeries> out;
+  for (const auto& run : runs) {
+    render::HydrometerSeries s{run.label, {}, {}, {}, {}};
+    for (const auto& h : run.results.hydrometer) {
+      s.time_s.push_back(h.time);
+      s.centre_depth_m.push_back(h.centre_depth);
+      s.diameter_m.push_back(h.diameter);
+      s.percent_finer.push_back(h.percent_finer);
+    }
+    if (!s.time_s.empty()) out.push_back(std::move(s));
+  }
+  return out;
+}
+
+std::vector<render::BuoyancySeries> fig16_input(const std::vector<LabelledResults>& runs) {
+  std::vector<render::BuoyancySeries> out;
+  for (const auto& run : runs) {
+    const auto* t = find_test(run.results, "buoyancy");
+    if (!t) continue;
+    const std::size_t mass = column(t->dem, "apparent_mass_kg");
+    render::BuoyancySeries s{run.label, {}, {}, {}, {}};
+    for (const auto& row : t->dem.rows) {
+      s.time_s.push_back(row.time);
+      s.apparent_mass_kg.push_back(row.extra[mass]);
+      s.diameter_m.push_back(row.diameter);
+      s.percent_finer.push_back(row.percent_finer);
+    }
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+std::vector<render::PipetteSeries> fig17_input(const std::vector<LabelledResults>& runs) {
+  std::vector<render::PipetteSeries> out;
+  for (const auto& run : runs) {
+    const auto* t = find_test(run.results, "pipette");
+    if (!t) continue;
+    render::PipetteSeries s{run.label, {}, {}, {}};
+    for (const auto& row : t->dem.rows) {
+      s.time_s.push_back(row.time);
+      s.diameter_m.push_back(row.diameter);
+      s.percent_finer.push_back(row.percent_finer);
+    }
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+std::vector<render::SampleGrading> fig18_input(const std::vector<LabelledResults>& runs) {
+  std::vector<render::SampleGrading> out;
+  for (const auto& run : runs) {
+    render::SampleGrading s;
+    s.sample = run.label;
+    s.truth.name = "true";
+    for (const auto& p : run.results.granulometry.true_curve) {
+      s.truth.diameter_m.push_back(p.diameter);
+      s.truth.percent_finer.push_back(p.percent_finer);
+    }
+    for (const auto& t : run.results.granulometry.tests) {
+      if (t.dem.rows.empty()) continue;
+      s.tests.push_back(curve(t.test, t.dem));
+      s.references.push_back(curve(t.test + " (reference)", t.reference));
+    }
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+void write_figures(const std::vector<LabelledResults>& runs, const std::filesystem::path& dir) {
+  if (auto in = fig12_input(runs); !in.samples.empty()) render::write_fig12(in, dir);
+  if (auto in = fig13_input(runs); !in.empty()) render::write_fig13(in, dir);
+  if (auto in = fig14_input(runs); !in.empty()) render::write_fig14(in, dir);
+  if (auto in = fig15_input(runs); !in.empty()) render::write_fig15(in, dir);
+  if (auto in = fig16_input(runs); !in.empty()) render::write_fig16(in, dir);
+  if (auto in = fig17_input(runs); !in.empty()) render::write_fig17(in, dir);
+  if (auto in = fig18_input(runs); !in.empty()) render::write_fig18(in, dir);
+}
+
+}  // namespace sedem::app

@@ -1,0 +1,31 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/observe/instrument_observer.h"
+#include "render/paper_figures.h"
+
+namespace sedem::app {
+
+// One run's test results with what the figures need to label and scale them.
+struct LabelledResults {
+  std::string label;  // the scene's name: one panel or curve per sample
+  TestResults results;
+  double column_height = 0.457;
+  double particle_density = 2500;
+};
+
+// The inputs of Figs. 12-18 from the results of one or more runs (one panel per run).
+render::LargestDiameterInput fig12_input(const std::vector<LabelledResults>& runs);
+std::vector<render::SampleBulbDensity> fig13_input(const std::vector<LabelledResults>& runs);
+std::vector<render::BulbAverageSeries> fig14_input(const std::vector<LabelledResults>& runs);
+std::vector<render::HydrometerSeries> fig15_input(const std::vector<LabelledResults>& runs);
+std::vector<render::BuoyancySeries> fig16_input(const std::vector<LabelledResults>& runs);
+std::vector<render::PipetteSeries> fig17_input(const std::vector<LabelledResults>& runs);
+std::vector<render::SampleGrading> fig18_input(const std::vector<LabelledResults>& runs);
+
+// Writes every figure the runs have data for into `dir` (PNG + CSV each).
+void write_figures(const std::vector<LabelledResults>& runs, const std::filesystem::path& dir);
+
+}  // namespace sedem::app

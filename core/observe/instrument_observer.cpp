@@ -1,0 +1,53 @@
+#include "core/observe/instrument_observer.h"
+
+#include <algorithm>
+
+#include "core/reference/reference_readings.h"
+
+namespace sedem {
+
+std::vector<TestReadings> TestResults::dem() const {
+  std::vector<TestReadings> out;
+  for (const auto& t : granulometry.tests) out.push_back(t.dem);
+  return out;
+}
+
+InstrumentObserver::InstrumentObserver(const Scene& scene, const Sample& sample)
+    : scene_(scene),
+      classes_(sample.classes),
+      particle_density_(sample.particle_density),
+      panel_(scene, sample),
+      reading_times_(panel_.reading_times()),
+      profile_times_(scene.instruments.profile_times),
+      times_(merge_times({reading_times_, profile_times_})),
+      reference_(reference_readings(scene, sample)) {
+  std::erase_if(times_, [&](double t) { return t > scene.end_time * (1 + 1e-12); });
+}
+
+void InstrumentObserver::observe(const Snapshot& snapshot) {
+  if (contains_time(reading_times_, snapshot.time))
+    panel_.observe(snapshot.time, snapshot.particles);
+  if (contains_time(profile_times_, snapshot.time))
+    profiles_.push_back(largest_diameter_profile(
+        snapshot.particles, scene_.cylinder, scene_.fluid, particle_density_,
+        std::size_t(scene_.instruments.layers), snapshot.time));
+}
+
+TestResults InstrumentObserver::results() const {
+  // The reference covers every reading time; compare only those the run reached.
+  std::vector<TestReadings> dem = panel_.readings();
+  std::vector<TestReadings> reference = reference_;
+  for (auto& ref : reference) {
+    auto it =
+        std::find_if(dem.begin(), dem.end(), [&](const auto& d) { return d.test == ref.test; });
+    const std::size_t reached = it == dem.end() ? 0 : it->rows.size();
+    if (ref.rows.size() > reached) ref.rows.resize(reached);
+  }
+  TestResults r;
+  r.granulometry = compare(dem, reference, classes_);
+  r.hydrometer = panel_.hydrometer_readings();
+  r.profiles = profiles_;
+  return r;
+}
+
+}  // namespace sedem

@@ -1,0 +1,45 @@
+#pragma once
+
+#include <vector>
+
+#include "core/fields/layer_fields.h"
+#include "core/instruments/granulometry.h"
+#include "core/instruments/instrument_panel.h"
+#include "core/observe/observer.h"
+#include "core/scene/scene.h"
+
+namespace sedem {
+
+// Everything the laboratory tests of a run produced, DEM and reference side by side.
+struct TestResults {
+  Granulometry granulometry;                     // DEM, reference, true curve, error, bias
+  std::vector<HydrometerReading> hydrometer;     // Figs. 13-15, hydrometer.pvd
+  std::vector<LargestDiameterProfile> profiles;  // Fig. 12
+  std::vector<TestReadings> dem() const;
+};
+
+// The enabled tests read from the particles at their times, plus the Fig. 12 profiles at
+// instruments.profile_times_min. The reference solution is computed in closed form for the
+// same scene, so the run's error and bias come out when the last reading is in.
+class InstrumentObserver : public Observer {
+ public:
+  InstrumentObserver(const Scene& scene, const Sample& sample);
+  std::string name() const override { return "instruments"; }
+  std::vector<double> wanted_times() const override { return times_; }
+  void observe(const Snapshot& snapshot) override;
+
+  // The readings taken so far against the reference at the same times.
+  TestResults results() const;
+  const HydrometerGeometry& hydrometer() const { return panel_.hydrometer(); }
+
+ private:
+  Scene scene_;
+  std::vector<SizeClass> classes_;
+  double particle_density_;
+  InstrumentPanel panel_;
+  std::vector<double> reading_times_, profile_times_, times_;
+  std::vector<TestReadings> reference_;
+  std::vector<LargestDiameterProfile> profiles_;
+};
+
+}  // namespace sedem
