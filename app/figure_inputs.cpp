@@ -30,6 +30,18 @@ render::GradingCurve curve(const std::string& name, const TestReadings& t) {
 
 }  // namespace
 
+render::MassBandsFigure fig11_input(const std::vector<LabelledResults>& runs) {
+  render::MassBandsFigure fig;
+  fig.title = "Column: mass share per band of 100 layers, with zooms";
+  for (const auto& run : runs) {
+    if (run.columns.empty()) continue;
+    fig.samples.push_back({run.label, run.columns});
+    fig.height = run.column_height;
+    fig.width = run.column_width;
+  }
+  return fig;
+}
+
 render::LargestDiameterInput fig12_input(const std::vector<LabelledResults>& runs) {
   render::LargestDiameterInput in;
   for (const auto& run : runs) {
@@ -137,6 +149,8 @@ std::vector<render::SampleGrading> fig18_input(const std::vector<LabelledResults
 }
 
 void write_figures(const std::vector<LabelledResults>& runs, const std::filesystem::path& dir) {
+  if (auto in = fig11_input(runs); !in.samples.empty())
+    render::write_mass_bands(in, dir / "fig11_column");
   if (auto in = fig12_input(runs); !in.samples.empty()) render::write_fig12(in, dir);
   if (auto in = fig13_input(runs); !in.empty()) render::write_fig13(in, dir);
   if (auto in = fig14_input(runs); !in.empty()) render::write_fig14(in, dir);

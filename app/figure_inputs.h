@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/observe/instrument_observer.h"
+#include "render/mass_bands.h"
 #include "render/paper_figures.h"
 
 namespace sedem::app {
@@ -12,9 +13,13 @@ namespace sedem::app {
 struct LabelledResults {
   std::string label;  // the scene's name: one panel or curve per sample
   TestResults results;
+  std::vector<render::ColumnState> columns;  // Fig. 11
   double column_height = 0.457;
+  double column_width = 0.0635;
   double particle_density = 2500;
 };
+
+render::MassBandsFigure fig11_input(const std::vector<LabelledResults>& runs);
 
 // The inputs of Figs. 12-18 from the results of one or more runs (one panel per run).
 render::LargestDiameterInput fig12_input(const std::vector<LabelledResults>& runs);
@@ -25,7 +30,8 @@ std::vector<render::BuoyancySeries> fig16_input(const std::vector<LabelledResult
 std::vector<render::PipetteSeries> fig17_input(const std::vector<LabelledResults>& runs);
 std::vector<render::SampleGrading> fig18_input(const std::vector<LabelledResults>& runs);
 
-// Writes every figure the runs have data for into `dir` (PNG + CSV each).
+// Writes every figure the runs have data for into `dir` (PNG + CSV each); several runs
+// share each figure, one panel (or column of panels) per run.
 void write_figures(const std::vector<LabelledResults>& runs, const std::filesystem::path& dir);
 
 }  // namespace sedem::app

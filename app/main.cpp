@@ -5,6 +5,7 @@
 #include "app/batch_command.h"
 #include "app/exit_codes.h"
 #include "app/qt_platform.h"
+#include "app/render_command.h"
 #include "app/run_command.h"
 
 int main(int argc, char** argv) {
@@ -33,6 +34,17 @@ int main(int argc, char** argv) {
   batch_cmd->add_option("--set", batch_options.overrides, "Override a key in every run");
   batch_cmd->add_flag("-q,--quiet", batch_options.quiet, "Print only warnings and errors");
 
+  RenderOptions render_options;
+  auto* render_cmd = cli.add_subcommand(
+      "render", "Draw a run's figures and frames again from its saved files, without simulating");
+  render_cmd->add_option("runs", render_options.run_dirs, "Run folders (written by sedem run)")
+      ->required();
+  render_cmd
+      ->add_option("--out", render_options.out_dir,
+                   "Where figures shared by several runs go (one panel per run)")
+      ->capture_default_str();
+  render_cmd->add_flag("-q,--quiet", render_options.quiet, "Print only warnings and errors");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -44,5 +56,6 @@ int main(int argc, char** argv) {
   QGuiApplication qt(argc, argv);
   if (run_cmd->parsed()) return run(run_options);
   if (batch_cmd->parsed()) return batch(batch_options);
+  if (render_cmd->parsed()) return render_runs(render_options);
   return exit_code::usage;
 }

@@ -40,6 +40,19 @@ void FieldsObserver::observe(const Snapshot& snapshot) {
   writer_.write(out);
 }
 
+ColumnFigureObserver::ColumnFigureObserver(const Scene& scene)
+    : height_(scene.cylinder.height), times_(scene.instruments.profile_times) {
+  std::erase_if(times_, [&](double t) { return t > scene.end_time * (1 + 1e-12); });
+}
+
+void ColumnFigureObserver::observe(const Snapshot& snapshot) {
+  render::ColumnState state;
+  state.time_s = snapshot.time;
+  state.band_mass_fraction = render::band_fractions_from_particles(snapshot.particles, height_, 40);
+  state.particles = render::discs_of(snapshot.particles);
+  states_.push_back(std::move(state));
+}
+
 RunObservers make_observers(const Scene& scene, const Sample& sample,
                             const std::filesystem::path& out_dir, bool with_particle_files) {
   RunObservers r;
@@ -55,7 +68,12 @@ RunObservers make_observers(const Scene& scene, const Sample& sample,
     r.all.push_back(std::make_unique<ParticleSeriesObserver>(merge_times(lists), scene, out_dir));
   }
   if (scene.output.fields) r.all.push_back(std::make_unique<FieldsObserver>(scene, out_dir));
-  if (scene.output.frames) r.all.push_back(std::make_unique<ColumnFrameObserver>(scene, out_dir));
+  if (scene.output.frames) {
+    r.all.push_back(std::make_unique<ColumnFrameObserver>(scene, out_dir));
+    auto columns = std::make_unique<ColumnFigureObserver>(scene);
+    r.columns = columns.get();
+    r.all.push_back(std::move(columns));
+  }
   return r;
 }
 

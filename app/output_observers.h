@@ -56,10 +56,26 @@ class FieldsObserver : public Observer {
   render::FieldSeriesWriter writer_;
 };
 
+// Fig. 11: the column's mass bands and particles at instruments.profile_times_min.
+class ColumnFigureObserver : public Observer {
+ public:
+  explicit ColumnFigureObserver(const Scene& scene);
+  std::string name() const override { return "fig11"; }
+  std::vector<double> wanted_times() const override { return times_; }
+  void observe(const Snapshot& snapshot) override;
+  const std::vector<render::ColumnState>& states() const { return states_; }
+
+ private:
+  double height_;
+  std::vector<double> times_;
+  std::vector<render::ColumnState> states_;
+};
+
 // The observers a scene asks for: an output that nothing asks for costs nothing.
 struct RunObservers {
   std::vector<std::unique_ptr<Observer>> all;
   InstrumentObserver* instruments = nullptr;  // in `all`; null when no test is enabled
+  ColumnFigureObserver* columns = nullptr;    // in `all`; null when frames are off
 };
 
 // `with_particle_files`: false when the snapshots come from files already (sedem render).

@@ -87,8 +87,7 @@ int run(const RunOptions& options) {
       &worker, &EngineWorker::snapshotReady, &qt,
       [&](std::shared_ptr<const Snapshot> snap) {
         try {
-          for (auto& o : observers)
-            if (contains_time(o->wanted_times(), snap->time)) o->observe(*snap);
+          dispatch(observers, *snap);
         } catch (const std::exception& e) {
           record.message = std::string("writing the outputs failed: ") + e.what();
           status = exit_code::io_failure;
@@ -124,9 +123,7 @@ int run(const RunOptions& options) {
 
   try {
     for (auto& o : observers) o->finish();
-    if (run_observers.instruments)
-      record.results = write_test_outputs(scene, run_observers.instruments->results(),
-                                          run_observers.instruments->hydrometer(), out);
+    if (run_observers.instruments) record.results = write_test_outputs(scene, run_observers, out);
   } catch (const std::exception& e) {
     record.message = std::string("writing the test results failed: ") + e.what();
     if (status == exit_code::ok || status == exit_code::interrupted) status = exit_code::io_failure;

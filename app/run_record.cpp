@@ -5,6 +5,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "core/scene/scene_loader.h"
+
 namespace sedem::app {
 
 nlohmann::json scene_json(Scene& scene) {
@@ -27,6 +29,13 @@ nlohmann::json scene_json(Scene& scene) {
         p.target);
   }
   return out;
+}
+
+Scene scene_from_json(const nlohmann::json& keys, const std::string& source) {
+  std::vector<std::string> sets;
+  // JSON's numbers, booleans, strings and lists of numbers are valid TOML values as dumped.
+  for (const auto& [key, value] : keys.items()) sets.push_back(key + "=" + value.dump());
+  return parse_scene("", source, sets);
 }
 
 std::size_t peak_memory_bytes() {

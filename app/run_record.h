@@ -28,6 +28,10 @@ struct RunRecord {
 // Every scene key with its value in user units, as a JSON object keyed by the dotted name.
 nlohmann::json scene_json(Scene& scene);
 
+// The scene back from scene_json (each key given as an override of the defaults).
+// Throws SceneError naming `source` and the key.
+Scene scene_from_json(const nlohmann::json& scene, const std::string& source);
+
 // Peak resident memory of this process, bytes.
 std::size_t peak_memory_bytes();
 

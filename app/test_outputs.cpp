@@ -35,19 +35,33 @@ nlohmann::json results_json(const TestResults& results) {
   return j;
 }
 
-nlohmann::json write_test_outputs(const Scene& scene, const TestResults& results,
-                                  const HydrometerGeometry& hydrometer, const fs::path& out_dir) {
+LabelledResults labelled_results(const Scene& scene, const RunObservers& observers) {
+  LabelledResults run;
+  run.label = scene.name;
+  run.column_height = scene.cylinder.height;
+  run.column_width = scene.cylinder.diameter;
+  run.particle_density = scene.sample.particle_density;
+  if (observers.instruments) run.results = observers.instruments->results();
+  if (observers.columns) run.columns = observers.columns->states();
+  return run;
+}
+
+nlohmann::json write_test_outputs(const Scene& scene, const RunObservers& observers,
+                                  const fs::path& out_dir) {
+  const LabelledResults run = labelled_results(scene, observers);
+  const TestResults& results = run.results;
   for (const auto& t : results.granulometry.tests)
     write_atomically(out_dir / ("readings_" + t.test + ".csv"),
                      [&](std::ostream& out) { write_readings_csv(out, t.dem); });
-  write_atomically(out_dir / "granulometry.csv",
-                   [&](std::ostream& out) { write_granulometry_csv(out, results.granulometry); });
-  if (!results.hydrometer.empty()) {
-    render::HydrometerSeriesWriter bulb(out_dir, {hydrometer.heights, hydrometer.radii},
-                                        scene.cylinder.height);
-    for (const auto& h : results.hydrometer) bulb.write(h.time, h.tip_depth);
+  if (observers.instruments) {
+    write_atomically(out_dir / "granulometry.csv",
+                     [&](std::ostream& out) { write_granulometry_csv(out, results.granulometry); });
   }
-  LabelledResults run{scene.name, results, scene.cylinder.height, scene.sample.particle_density};
+  if (!results.hydrometer.empty()) {
+    const auto& h = observers.instruments->hydrometer();
+    render::HydrometerSeriesWriter bulb(out_dir, {h.heights, h.radii}, scene.cylinder.height);
+    for (const auto& r : results.hydrometer) bulb.write(r.time, r.tip_depth);
+  }
   write_figures({run}, out_dir / "figures");
   return results_json(results);
 }

@@ -4,18 +4,20 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/instruments/hydrometer.h"
-#include "core/observe/instrument_observer.h"
+#include "app/figure_inputs.h"
+#include "app/output_observers.h"
 #include "core/scene/scene.h"
 
 namespace sedem::app {
 
-// What a run's laboratory tests leave in its folder: readings_<test>.csv, granulometry.csv,
-// hydrometer.pvd (the bulb at each reading) and the figures (Figs. 12-18, PNG + CSV) in
-// figures/. Returns each test's error and bias for run.json.
-nlohmann::json write_test_outputs(const Scene& scene, const TestResults& results,
-                                  const HydrometerGeometry& hydrometer,
+// What a run's observers leave in its folder when it ends: readings_<test>.csv,
+// granulometry.csv, hydrometer.pvd (the bulb at each reading) and the figures (Figs. 11-18,
+// PNG + CSV) in figures/. Returns each test's error and bias for run.json.
+nlohmann::json write_test_outputs(const Scene& scene, const RunObservers& observers,
                                   const std::filesystem::path& out_dir);
+
+// The figure data of a run's observers, labelled with the scene's name.
+LabelledResults labelled_results(const Scene& scene, const RunObservers& observers);
 
 // Error and bias of each test, in percentage points, for run.json.
 nlohmann::json results_json(const TestResults& results);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@ class Observer {
   // After the last snapshot, or when the run is stopped early: flush what was computed.
   virtual void finish() {}
 };
+
+// Hands `snapshot` to every observer that asked for its time.
+void dispatch(const std::vector<std::unique_ptr<Observer>>& observers, const Snapshot& snapshot);
 
 // Output times every `interval` from 0 to `end` inclusive (the last one at `end` exactly).
 std::vector<double> every(double interval, double end);

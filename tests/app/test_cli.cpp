@@ -36,6 +36,15 @@ TEST(Cli, DemoRunWritesAReadableSeriesAndANonBlankFrame) {
   EXPECT_GT(run["particle_count"].get<int>(), 1000);
   EXPECT_GT(run["particle_steps_per_s"].get<double>(), 0);
   EXPECT_EQ(run["scene"]["name"], "demo");
+  for (const char* test : {"hydrometer", "buoyancy", "pipette"}) {
+    EXPECT_TRUE(fs::exists(out / (std::string("readings_") + test + ".csv"))) << test;
+    EXPECT_GE(run["results"][test]["error_pp"].get<double>(), 0) << test;
+    EXPECT_GE(run["results"][test]["bias_pp"].get<double>(), 0) << test;
+  }
+  for (const char* file :
+       {"granulometry.csv", "fields.pvd", "hydrometer.pvd", "figures/fig11_column.png",
+        "figures/fig18_granulometry.png", "figures/fig18_granulometry.csv"})
+    EXPECT_TRUE(fs::exists(out / file)) << file;
 
   auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
   reader->SetFileName((out / "particles/particles_000001.vtp").c_str());
@@ -131,6 +140,45 @@ TEST(Cli, BatchRejectsAMalformedSweep) {
   auto r = test::run_sedem("batch " + kDemo + " --sweep sample.simulated_count");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.output.find("expected key=v1,v2"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace sedem
+
+namespace sedem {
+namespace {
+
+std::string text_of(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(Cli, RenderTakesTheSameReadingsAgainFromTheSavedFiles) {
+  const fs::path out = kOut / "render";
+  fs::remove_all(out);
+  ASSERT_EQ(test::run_sedem("run " + kDemo + " --out " + out.string() +
+                            " --set output.frames=false --quiet")
+                .status,
+            0);
+  const std::string readings = text_of(out / "readings_pipette.csv");
+  const std::string granulometry = text_of(out / "granulometry.csv");
+  fs::remove(out / "readings_pipette.csv");
+  fs::remove(out / "granulometry.csv");
+  fs::remove_all(out / "figures");
+
+  auto r = test::run_sedem("render " + out.string() + " --quiet");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(text_of(out / "readings_pipette.csv"), readings);
+  EXPECT_EQ(text_of(out / "granulometry.csv"), granulometry);
+  EXPECT_TRUE(fs::exists(out / "figures/fig17_pipette.png"));
+}
+
+TEST(Cli, RenderRefusesAFolderThatIsNoRun) {
+  auto r = test::run_sedem("render " + std::string(SEDEM_SOURCE_DIR) + "/scenes");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("no run.json"), std::string::npos) << r.output;
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 
 #include "core/engine/engine.h"
 
+#include "render/series_reader.h"
+
 namespace sedem::test {
 
 inline std::filesystem::path baseline(const char* name) {
@@ -44,16 +46,7 @@ namespace sedem::test {
 
 // The (timestep, file) entries of a .pvd collection, in file order.
 inline std::vector<std::pair<double, std::string>> parse_pvd(const std::filesystem::path& pvd) {
-  std::ifstream in(pvd);
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str();
-  std::vector<std::pair<double, std::string>> entries;
-  const std::regex dataset(R"re(<DataSet\s+timestep="([^"]+)"[^>]*\sfile="([^"]+)"\s*/>)re");
-  for (auto it = std::sregex_iterator(s.begin(), s.end(), dataset); it != std::sregex_iterator();
-       ++it)
-    entries.emplace_back(std::stod((*it)[1].str()), (*it)[2].str());
-  return entries;
+  return render::read_pvd(pvd);
 }
 
 inline std::string read_text(const std::filesystem::path& file) {
