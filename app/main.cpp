@@ -5,6 +5,7 @@
 #include "app/batch_command.h"
 #include "app/exit_codes.h"
 #include "app/qt_platform.h"
+#include "app/reduce_command.h"
 #include "app/render_command.h"
 #include "app/run_command.h"
 
@@ -45,6 +46,25 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   render_cmd->add_flag("-q,--quiet", render_options.quiet, "Print only warnings and errors");
 
+  ReduceOptions reduce_options;
+  auto* reduce_cmd = cli.add_subcommand(
+      "reduce", "Reduce laboratory hydrometer readings (152H) to a grading curve, ASTM D422/D7928");
+  reduce_cmd
+      ->add_option("readings", reduce_options.readings,
+                   "CSV with columns time_min, reading_g_per_l, temperature_c and optionally "
+                   "composite_correction_g_per_l")
+      ->required();
+  reduce_cmd->add_option("--out", reduce_options.out, "Output CSV (default: standard output)");
+  reduce_cmd->add_option("--method", reduce_options.method, "d422 or d7928")
+      ->check(CLI::IsMember({"d422", "d7928"}))
+      ->capture_default_str();
+  reduce_cmd->add_option("--gs", reduce_options.specific_gravity, "Specific gravity of the solids")
+      ->check(CLI::Range(1.01, 10.0))
+      ->capture_default_str();
+  reduce_cmd->add_option("--mass-g", reduce_options.dry_mass_g, "Oven-dry mass of the specimen, g")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -57,5 +77,6 @@ int main(int argc, char** argv) {
   if (run_cmd->parsed()) return run(run_options);
   if (batch_cmd->parsed()) return batch(batch_options);
   if (render_cmd->parsed()) return render_runs(render_options);
+  if (reduce_cmd->parsed()) return reduce(reduce_options);
   return exit_code::usage;
 }

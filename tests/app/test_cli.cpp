@@ -183,3 +183,48 @@ TEST(Cli, RenderRefusesAFolderThatIsNoRun) {
 
 }  // namespace
 }  // namespace sedem
+
+namespace sedem {
+namespace {
+
+TEST(Cli, ReduceFollowsAstmD422ByHand) {
+  const fs::path dir = kOut / "reduce";
+  fs::create_directories(dir);
+  std::ofstream(dir / "lab.csv") << "time_min,reading_g_per_l,temperature_c\n2,40,20\n";
+  auto r = test::run_sedem("reduce " + (dir / "lab.csv").string() + " --mass-g 50 --gs 2.65");
+  ASSERT_EQ(r.status, 0) << r.output;
+  // By hand, ASTM D422 for a 152H at 20 C, Gs = 2.65: L = 16.29 - 0.164 x 40 = 9.73 cm,
+  // K = sqrt(30 x 0.010017 / (980 x (2.65 - 0.99821))) = 0.013604 (the standard's table:
+  // 0.01365), D = K sqrt(9.73 / 2) = 0.030005 mm; a = 1 for Gs = 2.65, P = 40 / 50 x 100 = 80 %.
+  std::istringstream lines(r.output);
+  std::string header, row;
+  std::getline(lines, header);
+  std::getline(lines, row);
+  double time = 0, diameter = 0, percent = 0;
+  char comma;
+  std::istringstream(row) >> time >> comma >> diameter >> comma >> percent;
+  EXPECT_DOUBLE_EQ(time, 120.0);
+  EXPECT_NEAR(diameter * 1e3, 0.030005, 0.0002);
+  EXPECT_NEAR(percent, 80.0, 1e-9);
+}
+
+TEST(Cli, ReduceRejectsANegativeTimeNamingTheRow) {
+  const fs::path dir = kOut / "reduce";
+  fs::create_directories(dir);
+  std::ofstream(dir / "bad.csv") << "time_min,reading_g_per_l,temperature_c\n2,40,20\n-5,30,20\n";
+  auto r = test::run_sedem("reduce " + (dir / "bad.csv").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("row 2"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("times must be positive"), std::string::npos) << r.output;
+}
+
+TEST(Cli, HelpOfEachCommandNamesItsOptions) {
+  for (const char* cmd : {"run", "batch", "render", "reduce"}) {
+    auto r = test::run_sedem(std::string(cmd) + " --help");
+    EXPECT_EQ(r.status, 0) << cmd;
+    EXPECT_NE(r.output.find("Usage"), std::string::npos) << cmd << r.output;
+  }
+}
+
+}  // namespace
+}  // namespace sedem
