@@ -10,25 +10,6 @@
 
 namespace sedem::render {
 
-XmlSeriesWriter::XmlSeriesWriter(const std::filesystem::path& out_dir, std::string name,
-                                 std::string extension)
-    : dir_(out_dir),
-      name_(std::move(name)),
-      extension_(std::move(extension)),
-      series_(out_dir / (name_ + ".pvd")) {
-  std::filesystem::create_directories(dir_ / name_);
-}
-
-std::filesystem::path XmlSeriesWriter::write(vtkDataObject* data, double time) {
-  char number[16];
-  std::snprintf(number, sizeof number, "%06d", count_++);
-  const std::string relative = name_ + "/" + name_ + "_" + number + "." + extension_;
-  set_time_value(data, time);
-  write_vtk_xml(data, dir_ / relative);
-  series_.add(time, relative);
-  return dir_ / relative;
-}
-
 vtkSmartPointer<vtkImageData> layer_image(const LayerFields& f) {
   const std::size_t n = f.suspension_density_kg_m3.size();
   if (n == 0) throw std::invalid_argument("layer_image: no layers");
@@ -63,8 +44,8 @@ vtkSmartPointer<vtkImageData> layer_image(const LayerFields& f) {
   return image;
 }
 
-FieldSeriesWriter::FieldSeriesWriter(const std::filesystem::path& out_dir)
-    : series_(out_dir, "fields", "vti") {}
+FieldSeriesWriter::FieldSeriesWriter(const std::filesystem::path& out_dir, double keep_until)
+    : series_(out_dir, "fields", "vti", keep_until) {}
 
 std::filesystem::path FieldSeriesWriter::write(const LayerFields& fields) {
   return series_.write(layer_image(fields), fields.time_s);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -8,25 +9,9 @@
 #include <vtkImageData.h>
 #include <vtkSmartPointer.h>
 
-#include "render/particle_writer.h"
+#include "render/xml_series.h"
 
 namespace sedem::render {
-
-// A numbered file series under one folder with its .pvd next to it:
-// DIR/<name>.pvd listing DIR/<name>/<name>_NNNNNN.<extension>.
-class XmlSeriesWriter {
- public:
-  XmlSeriesWriter(const std::filesystem::path& out_dir, std::string name, std::string extension);
-  // Writes `data` (TimeValue is set to `time`) and adds it to the .pvd; returns the file.
-  std::filesystem::path write(vtkDataObject* data, double time);
-  const std::filesystem::path& pvd() const { return series_.path(); }
-
- private:
-  std::filesystem::path dir_;
-  std::string name_, extension_;
-  PvdSeries series_;
-  int count_ = 0;
-};
 
 // The layer fields at one time (Sect. 4.5.1): the column cut into n_ly horizontal layers.
 struct LayerFields {
@@ -49,7 +34,8 @@ vtkSmartPointer<vtkImageData> layer_image(const LayerFields& fields);
 // DIR/fields.pvd and DIR/fields/fields_NNNNNN.vti.
 class FieldSeriesWriter {
  public:
-  explicit FieldSeriesWriter(const std::filesystem::path& out_dir);
+  explicit FieldSeriesWriter(const std::filesystem::path& out_dir,
+                             double keep_until = -std::numeric_limits<double>::infinity());
   std::filesystem::path write(const LayerFields& fields);
 
  private:

@@ -18,31 +18,6 @@
 
 namespace sedem::render {
 
-PvdSeries::PvdSeries(std::filesystem::path pvd_file) : pvd_(std::move(pvd_file)) {}
-
-void PvdSeries::add(double time, const std::string& data_file) {
-  entries_.emplace_back(time, data_file);
-  write();
-}
-
-void PvdSeries::write() const {
-  auto tmp = pvd_;
-  tmp += ".tmp";
-  {
-    std::ofstream out(tmp);
-    out.precision(17);
-    out << "<?xml version=\"1.0\"?>\n"
-           "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-           "  <Collection>\n";
-    for (const auto& [time, file] : entries_)
-      out << "    <DataSet timestep=\"" << time << "\" group=\"\" part=\"0\" file=\"" << file
-          << "\"/>\n";
-    out << "  </Collection>\n</VTKFile>\n";
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  std::filesystem::rename(tmp, pvd_);
-}
-
 namespace {
 
 vtkSmartPointer<vtkDoubleArray> double_array(const char* name, int components, vtkIdType n) {
@@ -55,8 +30,7 @@ vtkSmartPointer<vtkDoubleArray> double_array(const char* name, int components, v
 
 }  // namespace
 
-void write_particles_vtp(const Snapshot& snapshot, double particle_density,
-                         const std::filesystem::path& file) {
+vtkSmartPointer<vtkPolyData> particles_polydata(const Snapshot& snapshot, double particle_density) {
   const auto& p = snapshot.particles;
   const auto n = vtkIdType(p.size());
   auto points = vtkSmartPointer<vtkPoints>::New();
@@ -100,20 +74,20 @@ void write_particles_vtp(const Snapshot& snapshot, double particle_density,
   pd->AddArray(id);
   pd->SetActiveScalars("diameter");
   set_time_value(poly, snapshot.time);
-  write_vtk_xml(poly, file);
+  return poly;
+}
+
+void write_particles_vtp(const Snapshot& snapshot, double particle_density,
+                         const std::filesystem::path& file) {
+  write_vtk_xml(particles_polydata(snapshot, particle_density), file);
 }
 
 ParticleSeriesWriter::ParticleSeriesWriter(const std::filesystem::path& out_dir,
-                                           double particle_density)
-    : dir_(out_dir), particle_density_(particle_density), series_(out_dir / "particles.pvd") {
-  std::filesystem::create_directories(dir_ / "particles");
-}
+                                           double particle_density, double keep_until)
+    : particle_density_(particle_density), series_(out_dir, "particles", "vtp", keep_until) {}
 
 void ParticleSeriesWriter::write(const Snapshot& snapshot) {
-  char name[64];
-  std::snprintf(name, sizeof name, "particles/particles_%06d.vtp", count_++);
-  write_particles_vtp(snapshot, particle_density_, dir_ / name);
-  series_.add(snapshot.time, name);
+  series_.write(particles_polydata(snapshot, particle_density_), snapshot.time);
 }
 
 }  // namespace sedem::render
