@@ -96,6 +96,11 @@ constexpr char kMagic[8] = {'S', 'E', 'D', 'E', 'M', 'C', 'K', '1'};
 
 }  // namespace
 
+// The margin of the candidate lists, in radii.
+constexpr double kListMargin = 0.5;
+
+namespace {}  // namespace
+
 Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::move(sample)) {
   const Particles& p = sample_.particles;
   const std::size_t n = p.size();
@@ -124,12 +129,12 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
   }
   const double reach = model_.lubrication_reach();
   for (std::size_t i = 0; i < n; ++i)
-    search_[i] = 0.5 * state_.diameter[i] * (1 + reach + model_.skin);
+    search_[i] = 0.5 * state_.diameter[i] * (1 + reach + model_.skin + kListMargin);
   if (n == 0) dmin = dmax = 1e-6;
 
   const Cylinder& cyl = scene_.cylinder;
-  grid_.configure(dmin * (1 + reach + model_.skin), dmax * (1 + reach + model_.skin),
-                  cyl.half_width(), cyl.height);
+  grid_.configure(dmin * (1 + reach + model_.skin + kListMargin),
+                  dmax * (1 + reach + model_.skin + kListMargin), cyl.half_width(), cyl.height);
   voidage_.configure(scene_.forces.voidage_cell, cyl.half_width(), cyl.height, cyl.slab_thickness(),
                      scene_.forces.min_voidage, threads_);
   pass_.configure(model_, threads_);
@@ -152,8 +157,8 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
       scene_.integrator.freeze_settled && model_.contact ? lowest_measured_height(scene_) : 0.0;
   // A first look at the contacts, so that the first step is chosen knowing them.
   if (n > 0) {
-    grid_.build(n, state_.x.data(), state_.y.data(), search_.data());
-    pass_.run(state_, grid_, search_, springs_, next_springs_, 0.0, forces_, facts_);
+    rebuild_lists();
+    pass_.run(state_, grid_, springs_, next_springs_, 0.0, forces_, facts_);
     next_springs_ = PairHistory{};
   }
 }
@@ -195,8 +200,14 @@ void Engine::step(double limit) {
   if (model_.drag == DragLaw::di_felice)
     voidage_.compute(n, state_.x.data(), state_.y.data(), state_.diameter.data(),
                      state_.weight.data());
-  grid_.build(n, state_.x.data(), state_.y.data(), search_.data());
-  pass_.run(state_, grid_, search_, springs_, next_springs_, dt, forces_, facts_);
+  if (lists_stale_) {
+    if (stats_.steps - resorted_at_ >= 16) {
+      resort();
+      resorted_at_ = stats_.steps;
+    }
+    rebuild_lists();
+  }
+  pass_.run(state_, grid_, springs_, next_springs_, dt, forces_, facts_);
   if (facts_.blowup.found) {
     const auto& b = facts_.blowup;
     throw InstabilityError(sample_.particles.id[b.particle], time_, b.quantity, b.value);
@@ -215,7 +226,34 @@ void Engine::step(double limit) {
     throw InstabilityError(sample_.particles.id[blowup.particle], time_, blowup.quantity,
                            blowup.value);
   if (freeze_height_ > 0 && stats_.steps % 64 == 0) freeze_resting();
-  if (stats_.steps % 16 == 0) resort();
+  lists_stale_ = moved_beyond_margin();
+}
+
+void Engine::rebuild_lists() {
+  const std::size_t n = state_.size();
+  x0_ = state_.x;
+  y0_ = state_.y;
+  grid_.build(n, x0_.data(), y0_.data(), search_.data());
+  pass_.build_lists(grid_, n, x0_.data(), y0_.data(), search_.data());
+  lists_stale_ = false;
+}
+
+// A pair's distance shrinks by at most the sum of both moves; the lists hold every pair within
+// the interaction range plus kListMargin (r_i + r_j), so they stay complete while every
+// particle has moved less than half its own margin.
+bool Engine::moved_beyond_margin() const {
+  const std::size_t n = state_.size();
+  const double* x = state_.x.data();
+  const double* y = state_.y.data();
+  const double* d = state_.diameter.data();
+  int moved = 0;
+#pragma omp parallel for num_threads(threads_) if (threads_ > 1) reduction(| : moved)
+  for (std::size_t i = 0; i < n; ++i) {
+    const double dx = x[i] - x0_[i], dy = y[i] - y0_[i];
+    const double allowed = 0.25 * kListMargin * d[i];  // half the margin of radius r = d/2
+    moved |= int(dx * dx + dy * dy > allowed * allowed);
+  }
+  return moved != 0;
 }
 
 // A particle is at rest when it touches something and moves at less than 1e-3 of its
@@ -275,7 +313,8 @@ std::size_t Engine::bytes() const {
        cap(state_.diameter) + cap(state_.weight) + cap(state_.origin) + cap(state_.frozen);
   b += cap(forces_.fx) + cap(forces_.fy) + cap(forces_.torque) + cap(forces_.stiffness) +
        cap(forces_.spin_stiffness);
-  b += cap(search_) + cap(scratch_) + cap(scratch_index_) + cap(scratch_flag_);
+  b +=
+      cap(search_) + cap(x0_) + cap(y0_) + cap(scratch_) + cap(scratch_index_) + cap(scratch_flag_);
   b += grid_.bytes() + voidage_.bytes() + pass_.bytes() + springs_.bytes() + next_springs_.bytes();
   return b;
 }
@@ -293,6 +332,10 @@ void Engine::save_checkpoint(const std::string& path) const {
     write_vector(out, *v);
   write_vector(out, state_.origin);
   write_vector(out, state_.frozen);
+  write_vector(out, x0_);
+  write_vector(out, y0_);
+  write_value(out, lists_stale_);
+  write_value(out, resorted_at_);
   const auto springs = springs_.sorted_entries();
   const std::uint64_t count = springs.size();
   write_value(out, count);
@@ -318,6 +361,10 @@ void Engine::load_checkpoint(const std::string& path) {
     read_vector(in, *v);
   read_vector(in, state_.origin);
   read_vector(in, state_.frozen);
+  read_vector(in, x0_);
+  read_vector(in, y0_);
+  read_value(in, lists_stale_);
+  read_value(in, resorted_at_);
   std::uint64_t count = 0;
   read_value(in, count);
   std::vector<PairHistory::Entry> springs(count);
@@ -326,6 +373,11 @@ void Engine::load_checkpoint(const std::string& path) {
   springs_.assign(&springs, 1);
   integrator_->load(in);
   if (!in) throw std::runtime_error("truncated checkpoint " + path);
+  // The lists as they were: built from the saved build positions, in the saved order.
+  if (!lists_stale_) {
+    grid_.build(state_.size(), x0_.data(), y0_.data(), search_.data());
+    pass_.build_lists(grid_, state_.size(), x0_.data(), y0_.data(), search_.data());
+  }
   synced_step_ = -1;
 }
 

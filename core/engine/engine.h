@@ -3,8 +3,11 @@
 // The DEM engine: Eq. 5 for every particle, forces of Sect. 3 and 4.2 (see forces.h), the
 // integrators of Sect. 4.6 (see integrators.h), neighbour search in neighbour_grid.h.
 // One step: voidage grid (Di Felice only) -> neighbour grid -> force pass -> integrator;
-// every 16 steps the state is re-sorted in grid order; every 64 steps resting particles
-// below the lowest instrument are frozen. A blow-up throws InstabilityError.
+// Candidate lists (Verlet) are rebuilt from the grid when a particle has moved more than a
+// quarter of its radius since the last build (the search radii carry a margin of half a
+// radius); at most every 16 steps the rebuild first re-sorts the state in grid order. Every
+// 64 steps resting particles below the lowest instrument are frozen. A blow-up throws
+// InstabilityError.
 
 #include <cstdint>
 #include <memory>
@@ -73,13 +76,18 @@ class Engine {
  private:
   void freeze_resting();
   void resort();
+  void rebuild_lists();
+  bool moved_beyond_margin() const;
 
   Scene scene_;
   mutable Sample sample_;
   mutable std::int64_t synced_step_ = -1;
   EngineState state_;
   ForceAccumulators forces_;
-  std::vector<double> search_;  // search radius per particle (radius + lubrication reach)
+  std::vector<double> search_;   // search radius: radius + lubrication reach + skins + margin
+  std::vector<double> x0_, y0_;  // positions when the candidate lists were built
+  bool lists_stale_ = true;
+  std::int64_t resorted_at_ = 0;
   std::vector<double> scratch_;
   std::vector<std::uint32_t> scratch_index_;
   std::vector<std::uint8_t> scratch_flag_;

@@ -13,17 +13,53 @@ void ForcePass::configure(const ForceModel& model, int threads) {
   reactions_.resize(std::size_t(threads_));
   springs_.resize(std::size_t(threads_));
   facts_.resize(std::size_t(threads_));
+  local_lists_.resize(std::size_t(threads_));
+}
+
+void ForcePass::build_lists(const NeighbourGrid& grid, std::size_t n, const double* x0,
+                            const double* y0, const double* radius) {
+  const auto& order = grid.order();
+  list_start_.resize(n + 1);
+  list_start_[0] = 0;
+#pragma omp parallel num_threads(threads_) if (threads_ > 1)
+  {
+    auto& mine = local_lists_[std::size_t(omp_get_thread_num())];
+    mine.clear();
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::uint32_t i = order[k];
+      std::uint32_t count = 0;
+      grid.for_each_candidate(i, x0, y0, radius, [&](std::uint32_t j) {
+        const double dx = x0[j] - x0[i], dy = y0[j] - y0[i], reach = radius[i] + radius[j];
+        if (dx * dx + dy * dy < reach * reach) {
+          mine.push_back(j);
+          ++count;
+        }
+      });
+      list_start_[k + 1] = count;
+    }
+  }
+  for (std::size_t k = 0; k < n; ++k) list_start_[k + 1] += list_start_[k];
+  list_.resize(list_start_[n]);
+  // Static schedule: thread t handled the t-th contiguous block of k, so concatenating the
+  // threads' lists in order gives the lists in k order.
+  std::size_t at = 0;
+  for (const auto& l : local_lists_) {
+    std::copy(l.begin(), l.end(), list_.begin() + std::ptrdiff_t(at));
+    at += l.size();
+  }
 }
 
 std::size_t ForcePass::bytes() const {
   std::size_t b = 0;
   for (const auto& r : reactions_) b += r.capacity() * sizeof(Reaction);
   for (const auto& e : springs_) b += e.capacity() * sizeof(PairHistory::Entry);
+  for (const auto& l : local_lists_) b += l.capacity() * 4;
+  b += (list_start_.capacity() + list_.capacity()) * 4;
   return b;
 }
 
-void ForcePass::run(const EngineState& s, const NeighbourGrid& grid,
-                    const std::vector<double>& search, const PairHistory& old_springs,
+void ForcePass::run(const EngineState& s, const NeighbourGrid& grid, const PairHistory& old_springs,
                     PairHistory& new_springs, double dt, ForceAccumulators& out, PassFacts& facts) {
   const std::size_t n = s.size();
   const ForceModel& m = model_;
@@ -35,7 +71,6 @@ void ForcePass::run(const EngineState& s, const NeighbourGrid& grid,
   const double* d = s.diameter.data();
   const std::uint32_t* origin = s.origin.data();
   const std::uint8_t* frozen = s.frozen.data();
-  const double* radius = search.data();
   const auto& order = grid.order();
   const double hw = m.half_width;
   const double reach = m.lubrication_reach();
@@ -74,14 +109,15 @@ void ForcePass::run(const EngineState& s, const NeighbourGrid& grid,
 
       if (m.contact || m.lubrication) {
         const int own = grid.level(i);
-        grid.for_each_candidate(i, x, y, radius, [&](std::uint32_t j) {
-          if (frozen[i] && frozen[j]) return;
+        for (std::uint32_t c = list_start_[k], e = list_start_[k + 1]; c < e; ++c) {
+          const std::uint32_t j = list_[c];
+          if (frozen[i] && frozen[j]) continue;
           const bool cross = grid.level(j) != own;  // found from this side only
           const double dx = x[j] - x[i], dy = y[j] - y[i];
           const double dist2 = dx * dx + dy * dy;
           const double rj = 0.5 * d[j];
           const double cutoff = (ri + rj) * (1 + m.skin) + reach * std::max(ri, rj);
-          if (dist2 >= cutoff * cutoff || dist2 == 0) return;
+          if (dist2 >= cutoff * cutoff || dist2 == 0) continue;
           const double dist = std::sqrt(dist2);
           const double nx = dx / dist, ny = dy / dist;  // from i to j
           const double overlap = ri + rj - dist;
@@ -133,7 +169,7 @@ void ForcePass::run(const EngineState& s, const NeighbourGrid& grid,
           }
           if (cross && !frozen[j] && (jfx != 0 || jfy != 0 || jtq != 0 || jstiff != 0))
             reactions.push_back({j, jfx, jfy, jtq, jstiff, jspin});
-        });
+        }
       }
 
       out.fx[i] = fx;

@@ -29,9 +29,13 @@ struct PassFacts {
 class ForcePass {
  public:
   void configure(const ForceModel& model, int threads);
-  void run(const EngineState& s, const NeighbourGrid& grid, const std::vector<double>& search,
-           const PairHistory& old_springs, PairHistory& new_springs, double dt,
-           ForceAccumulators& out, PassFacts& facts);
+  // Candidate lists (Verlet): for each particle, in the grid's order, the partners found by
+  // the grid within radius[i] + radius[j] of the positions (x0, y0). Valid while no particle
+  // has moved more than half the margin the radii carry beyond the interaction range.
+  void build_lists(const NeighbourGrid& grid, std::size_t n, const double* x0, const double* y0,
+                   const double* radius);
+  void run(const EngineState& s, const NeighbourGrid& grid, const PairHistory& old_springs,
+           PairHistory& new_springs, double dt, ForceAccumulators& out, PassFacts& facts);
   std::size_t bytes() const;
 
  private:
@@ -49,6 +53,8 @@ class ForcePass {
   std::vector<std::vector<Reaction>> reactions_;
   std::vector<std::vector<PairHistory::Entry>> springs_;
   std::vector<ThreadFacts> facts_;
+  std::vector<std::vector<std::uint32_t>> local_lists_;
+  std::vector<std::uint32_t> list_start_, list_;
 };
 
 }  // namespace sedem

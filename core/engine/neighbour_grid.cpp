@@ -14,11 +14,13 @@ void NeighbourGrid::configure(double min_search_diameter, double max_search_diam
   levels_ = 1;
   while (cell0_ * std::ldexp(1.0, levels_ - 1) < max_search_diameter && levels_ < 32) ++levels_;
   cell_.assign(levels_, 0);
+  inverse_cell_.assign(levels_, 0);
   columns_.assign(levels_, 0);
   rows_.assign(levels_, 0);
   offset_.assign(levels_ + 1, 0);
   for (int l = 0; l < levels_; ++l) {
     cell_[l] = cell0_ * std::ldexp(1.0, l);
+    inverse_cell_[l] = 1.0 / cell_[l];
     columns_[l] = std::max<std::int64_t>(1, std::int64_t(std::ceil(2 * half_width / cell_[l])));
     rows_[l] = std::max<std::int64_t>(1, std::int64_t(std::ceil(height / cell_[l])) + 1);
     offset_[l + 1] = offset_[l] + std::uint64_t(columns_[l]) * std::uint64_t(rows_[l]);

@@ -45,7 +45,7 @@ class NeighbourGrid {
 
   int levels_ = 1;
   double cell0_ = 1, half_width_ = 0, height_ = 0;
-  std::vector<double> cell_;
+  std::vector<double> cell_, inverse_cell_;
   std::vector<std::int64_t> columns_, rows_;
   std::vector<std::uint64_t> offset_;
   std::uint64_t mask_ = 0;
@@ -55,13 +55,13 @@ class NeighbourGrid {
 };
 
 inline std::int64_t NeighbourGrid::column(int level, double x) const {
-  std::int64_t c = std::int64_t((x + half_width_) / cell_[level]);
+  std::int64_t c = std::int64_t((x + half_width_) * inverse_cell_[level]);
   if (x + half_width_ < 0) c = 0;
   return c >= columns_[level] ? columns_[level] - 1 : c;
 }
 
 inline std::int64_t NeighbourGrid::row(int level, double y) const {
-  std::int64_t r = std::int64_t(y / cell_[level]);
+  std::int64_t r = std::int64_t(y * inverse_cell_[level]);
   if (y < 0) r = 0;
   return r >= rows_[level] ? rows_[level] - 1 : r;
 }
