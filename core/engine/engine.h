@@ -4,10 +4,9 @@
 // integrators of Sect. 4.6 (see integrators.h), neighbour search in neighbour_grid.h.
 // One step: voidage grid (Di Felice only) -> neighbour grid -> force pass -> integrator;
 // Candidate lists (Verlet) are rebuilt from the grid when a particle has moved more than a
-// quarter of its radius since the last build (the search radii carry a margin of half a
-// radius); at most every 16 steps the rebuild first re-sorts the state in grid order. Every
-// 64 steps resting particles below the lowest instrument are frozen. A blow-up throws
-// InstabilityError.
+// half its radius since the last build (the search radii carry a margin of one radius); at most
+// every 16 steps the rebuild first re-sorts the state in grid order. Every 64 steps resting
+// particles below the lowest instrument are frozen. A blow-up throws InstabilityError.
 
 #include <cstdint>
 #include <memory>

@@ -18,8 +18,10 @@ class VoidageGrid {
   void compute(std::size_t n, const double* x, const double* y, const double* diameter,
                const double* weight);
   double at(double x, double y) const { return voidage_[cell_of(x, y)]; }
+  // ln(eps) of the cell at (x, y), kept alongside so that eps^a costs one exp.
+  double log_at(double x, double y) const { return log_voidage_[cell_of(x, y)]; }
   std::size_t cell_count() const { return voidage_.size(); }
-  std::size_t bytes() const { return (voidage_.size() + partial_.size()) * sizeof(double); }
+  std::size_t bytes() const { return (2 * voidage_.size() + partial_.size()) * sizeof(double); }
 
  private:
   std::size_t cell_of(double x, double y) const {
@@ -31,7 +33,7 @@ class VoidageGrid {
   double inverse_cell_ = 1, half_width_ = 0, cell_volume_ = 1, min_voidage_ = 0;
   long columns_ = 1, rows_ = 1;
   int threads_ = 1;
-  std::vector<double> voidage_, partial_;
+  std::vector<double> voidage_, log_voidage_, partial_;
 };
 
 }  // namespace sedem
