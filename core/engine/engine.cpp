@@ -1,45 +1,384 @@
 #include "core/engine/engine.h"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
 
 #include "core/physics/stokes.h"
 
 namespace sedem {
 
-Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::move(sample)) {
-  step_ = scene_.output.interval;
+InstabilityError::InstabilityError(std::uint32_t id, double t, std::string what, double v)
+    : std::runtime_error([&] {
+        std::ostringstream m;
+        m << "instability: particle " << id << " at t = " << t << " s: " << what << " = " << v;
+        return m.str();
+      }()),
+      particle_id(id),
+      time(t),
+      quantity(std::move(what)),
+      value(v) {}
+
+namespace {
+
+ForceModel force_model(const Scene& scene, double particle_density) {
+  const ForcesConfig& f = scene.forces;
+  ForceModel m;
+  m.weight = f.weight;
+  m.buoyancy = f.buoyancy;
+  m.contact = f.contact;
+  m.friction = f.contact && f.friction > 0;
+  m.lubrication = f.lubrication;
+  m.drag = f.drag == "off"      ? DragLaw::off
+           : f.drag == "stokes" ? DragLaw::stokes
+                                : DragLaw::di_felice;
+  m.kn = f.stiffness_normal;
+  m.kt = f.stiffness_tangential;
+  m.mu = f.friction;
+  m.lubrication_intensity = f.lubrication_intensity;
+  m.lubrication_range = f.lubrication_range;
+  m.particle_density = particle_density;
+  m.fluid_density = scene.fluid.density;
+  m.viscosity = scene.fluid.viscosity;
+  m.gravity = scene.fluid.gravity;
+  m.half_width = scene.cylinder.half_width();
+  return m;
 }
 
-// First slice: weight, buoyancy and Stokes drag integrated exactly over each step
-// (u relaxes to u_tr with time constant tau), the bottom as a rigid floor.
-void Engine::advance_to(double t) {
-  auto& p = sample_.particles;
+// The height below which nothing is measured: the bottom of the hydrometer's bulb at its
+// deepest reading (effective depth 16.29 cm at R = 0 plus half the 14 cm bulb), the buoyancy
+// sphere, the pipette's sample (a sphere of its volume), less a 1 cm margin.
+double lowest_measured_height(const Scene& scene) {
+  const auto& in = scene.instruments;
+  const double h = scene.cylinder.height;
+  double depth = 0;
+  if (in.hydrometer) depth = std::max(depth, 0.1629 + 0.07);
+  if (in.buoyancy)
+    depth = std::max(depth, in.buoyancy_depth_fraction * h + 0.5 * in.sphere_diameter);
+  if (in.pipette) {
+    const double r = std::cbrt(3 * in.pipette_volume / (4 * std::numbers::pi));
+    depth = std::max(depth, in.pipette_depth_fraction * h + r);
+  }
+  return h - depth - 0.01;
+}
+
+template <class T>
+void write_vector(std::ostream& out, const std::vector<T>& v) {
+  const std::uint64_t n = v.size();
+  out.write(reinterpret_cast<const char*>(&n), sizeof n);
+  out.write(reinterpret_cast<const char*>(v.data()), std::streamsize(n * sizeof(T)));
+}
+
+template <class T>
+void read_vector(std::istream& in, std::vector<T>& v) {
+  std::uint64_t n = 0;
+  in.read(reinterpret_cast<char*>(&n), sizeof n);
+  if (!in || n != v.size()) throw std::runtime_error("checkpoint does not match this sample");
+  in.read(reinterpret_cast<char*>(v.data()), std::streamsize(n * sizeof(T)));
+}
+
+template <class T>
+void write_value(std::ostream& out, const T& v) {
+  out.write(reinterpret_cast<const char*>(&v), sizeof v);
+}
+
+template <class T>
+void read_value(std::istream& in, T& v) {
+  in.read(reinterpret_cast<char*>(&v), sizeof v);
+}
+
+constexpr char kMagic[8] = {'S', 'E', 'D', 'E', 'M', 'C', 'K', '1'};
+
+}  // namespace
+
+// The margin of the candidate lists, in radii.
+constexpr double kListMargin = 1.0;
+
+namespace {}  // namespace
+
+Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::move(sample)) {
+  const Particles& p = sample_.particles;
   const std::size_t n = p.size();
-  const double rho_p = sample_.particle_density;
-  while (time_ < t) {
-    const double dt = std::min(step_, t - time_);
-#pragma omp parallel for schedule(static)
+  threads_ = scene_.integrator.threads > 0 ? int(scene_.integrator.threads) : omp_get_max_threads();
+  // Below a few thousand particles a step takes microseconds and forking threads costs more.
+  if (n < 4096) threads_ = 1;
+  model_ = force_model(scene_, sample_.particle_density);
+  if (scene_.integrator.method == "reference") model_.skin = 0.25;
+
+  state_.resize(n);
+  forces_.resize(n);
+  search_.resize(n);
+  double dmin = 0, dmax = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    state_.x[i] = p.x[i];
+    state_.y[i] = p.y[i];
+    state_.vx[i] = p.vx.empty() ? 0 : p.vx[i];
+    state_.vy[i] = p.vy.empty() ? 0 : p.vy[i];
+    state_.omega[i] = p.omega.empty() ? 0 : p.omega[i];
+    state_.diameter[i] = p.diameter[i];
+    state_.weight[i] = p.weight[i];
+    state_.origin[i] = std::uint32_t(i);
+    state_.frozen[i] = 0;
+    dmin = i == 0 ? p.diameter[i] : std::min(dmin, p.diameter[i]);
+    dmax = std::max(dmax, p.diameter[i]);
+  }
+  const double reach = model_.lubrication_reach();
+  for (std::size_t i = 0; i < n; ++i)
+    search_[i] = 0.5 * state_.diameter[i] * (1 + reach + model_.skin + kListMargin);
+  if (n == 0) dmin = dmax = 1e-6;
+
+  const Cylinder& cyl = scene_.cylinder;
+  grid_.configure(dmin * (1 + reach + model_.skin + kListMargin),
+                  dmax * (1 + reach + model_.skin + kListMargin), cyl.half_width(), cyl.height);
+  voidage_.configure(scene_.forces.voidage_cell, cyl.half_width(), cyl.height, cyl.slab_thickness(),
+                     scene_.forces.min_voidage, threads_);
+  pass_.configure(model_, threads_);
+
+  const Fluid& fluid = scene_.fluid;
+  IntegratorContext ctx;
+  ctx.model = &model_;
+  ctx.drag = DragEvaluator{&model_, &voidage_};
+  ctx.threads = threads_;
+  ctx.min_response_time = stokes::response_time(dmin, model_.particle_density, fluid, 0.95);
+  ctx.min_terminal_speed = stokes::terminal_velocity(dmin, model_.particle_density, fluid);
+  // Contacts between the smallest grains legitimately reach ~1 m/s (a 1 nm overlap on a
+  // 2.5 um grain stores that much); far beyond that a speed is a blow-up.
+  ctx.runaway_speed =
+      std::max(10.0, 1e4 * stokes::terminal_velocity(dmax, model_.particle_density, fluid));
+  ctx.min_radius = 0.5 * dmin;
+  ctx.max_terminal_speed = stokes::terminal_velocity(dmax, model_.particle_density, fluid) / 0.96;
+  integrator_ = make_integrator(scene_.integrator, ctx);
+  freeze_height_ =
+      scene_.integrator.freeze_settled && model_.contact ? lowest_measured_height(scene_) : 0.0;
+  // A first look at the contacts, so that the first step is chosen knowing them.
+  if (n > 0) {
+    rebuild_lists();
+    pass_.run(state_, grid_, springs_, next_springs_, 0.0, forces_, facts_);
+    next_springs_ = PairHistory{};
+  }
+}
+
+Engine::~Engine() = default;
+
+const Particles& Engine::particles() const {
+  if (synced_step_ != stats_.steps) {
+    Particles& p = sample_.particles;
+    const std::size_t n = state_.size();
     for (std::size_t i = 0; i < n; ++i) {
-      const double d = p.diameter[i];
-      const double tau = stokes::relaxation_time(d, rho_p, scene_.fluid);
-      const double ut = -stokes::terminal_velocity(d, rho_p, scene_.fluid);
-      const double decay = std::exp(-dt / tau);
-      // Exact solution of du/dt = (ut - u)/tau over dt, for velocity and displacement.
-      const double v0 = p.vy[i];
-      p.y[i] += ut * dt + (v0 - ut) * tau * (1.0 - decay);
-      p.vy[i] = ut + (v0 - ut) * decay;
-      p.vx[i] *= decay;
-      const double r = 0.5 * d;
-      if (p.y[i] < r) {
-        p.y[i] = r;
-        p.vy[i] = 0;
+      const std::uint32_t o = state_.origin[i];
+      p.x[o] = state_.x[i];
+      p.y[o] = state_.y[i];
+      p.vx[o] = state_.vx[i];
+      p.vy[o] = state_.vy[i];
+      p.omega[o] = state_.omega[i];
+    }
+    synced_step_ = stats_.steps;
+  }
+  return sample_.particles;
+}
+
+const Sample& Engine::sample() const {
+  particles();
+  return sample_;
+}
+
+void Engine::advance_to(double t) {
+  while (time_ < t) step(t);
+}
+
+void Engine::step(double limit) {
+  const std::size_t n = state_.size();
+  double dt = integrator_->next_step(facts_);
+  const bool last = time_ + dt >= limit;
+  if (last) dt = limit - time_;
+
+  if (model_.drag == DragLaw::di_felice)
+    voidage_.compute(n, state_.x.data(), state_.y.data(), state_.diameter.data(),
+                     state_.weight.data());
+  if (lists_stale_) {
+    if (stats_.steps - resorted_at_ >= 16) {
+      resort();
+      resorted_at_ = stats_.steps;
+    }
+    rebuild_lists();
+  }
+  pass_.run(state_, grid_, springs_, next_springs_, dt, forces_, facts_);
+  if (facts_.blowup.found) {
+    const auto& b = facts_.blowup;
+    throw InstabilityError(sample_.particles.id[b.particle], time_, b.quantity, b.value);
+  }
+  if (model_.friction) std::swap(springs_, next_springs_);
+
+  Blowup blowup;
+  integrator_->advance(state_, forces_, dt, blowup);
+  time_ = last ? limit : time_ + dt;
+  stats_.steps += 1;
+  stats_.particle_steps += double(n - stats_.frozen);
+  stats_.last_step = dt;
+  stats_.contacts = facts_.contacts;
+  stats_.max_overlap_ratio = std::max(stats_.max_overlap_ratio, facts_.max_overlap_ratio);
+  if (blowup.found)
+    throw InstabilityError(sample_.particles.id[blowup.particle], time_, blowup.quantity,
+                           blowup.value);
+  if (freeze_height_ > 0 && stats_.steps % 64 == 0) freeze_resting();
+  lists_stale_ = moved_beyond_margin();
+}
+
+void Engine::rebuild_lists() {
+  const std::size_t n = state_.size();
+  x0_ = state_.x;
+  y0_ = state_.y;
+  grid_.build(n, x0_.data(), y0_.data(), search_.data());
+  pass_.build_lists(grid_, n, x0_.data(), y0_.data(), search_.data());
+  lists_stale_ = false;
+}
+
+// A pair's distance shrinks by at most the sum of both moves; the lists hold every pair within
+// the interaction range plus kListMargin (r_i + r_j), so they stay complete while every
+// particle has moved less than half its own margin.
+bool Engine::moved_beyond_margin() const {
+  const std::size_t n = state_.size();
+  const double* x = state_.x.data();
+  const double* y = state_.y.data();
+  const double* d = state_.diameter.data();
+  int moved = 0;
+#pragma omp parallel for num_threads(threads_) if (threads_ > 1) reduction(| : moved)
+  for (std::size_t i = 0; i < n; ++i) {
+    const double dx = x[i] - x0_[i], dy = y[i] - y0_[i];
+    const double allowed = 0.25 * kListMargin * d[i];  // half the margin of radius r = d/2
+    moved |= int(dx * dx + dy * dy > allowed * allowed);
+  }
+  return moved != 0;
+}
+
+// A particle is at rest when it touches something and moves at less than 1e-3 of its
+// terminal speed; below every instrument nothing it could still do is measured.
+void Engine::freeze_resting() {
+  const Fluid& fluid = scene_.fluid;
+  std::size_t frozen = 0;
+  for (std::size_t i = 0; i < state_.size(); ++i) {
+    if (!state_.frozen[i] && state_.y[i] < freeze_height_ && forces_.stiffness[i] > 0) {
+      const double ut =
+          stokes::terminal_velocity(state_.diameter[i], model_.particle_density, fluid);
+      if (std::hypot(state_.vx[i], state_.vy[i]) < 1e-3 * ut) {
+        state_.frozen[i] = 1;
+        state_.vx[i] = state_.vy[i] = state_.omega[i] = 0;
       }
     }
-    time_ += dt;
-    stats_.steps += 1;
-    stats_.particle_steps += double(n);
+    frozen += state_.frozen[i];
   }
+  stats_.frozen = frozen;
+}
+
+// Puts the state in the neighbour grid's bucket order, so that a particle's neighbours are
+// near it in memory for the next steps.
+void Engine::resort() {
+  const auto& order = grid_.order();
+  const std::size_t n = state_.size();
+  if (order.size() != n) return;
+  scratch_.resize(n);
+  auto permute = [&](auto& v, auto& tmp) {
+    tmp.resize(n);
+    for (std::size_t k = 0; k < n; ++k) tmp[k] = v[order[k]];
+    std::swap(v, tmp);
+  };
+  for (auto* v : {&state_.x, &state_.y, &state_.vx, &state_.vy, &state_.omega, &state_.diameter,
+                  &state_.weight, &search_})
+    permute(*v, scratch_);
+  permute(state_.origin, scratch_index_);
+  permute(state_.frozen, scratch_flag_);
+}
+
+double Engine::kinetic_energy() const {
+  double e = 0;
+  for (std::size_t i = 0; i < state_.size(); ++i) {
+    const double d = state_.diameter[i], m = model_.mass(d);
+    e += 0.5 * m * (state_.vx[i] * state_.vx[i] + state_.vy[i] * state_.vy[i]) +
+         0.5 * 0.1 * m * d * d * state_.omega[i] * state_.omega[i];
+  }
+  return e;
+}
+
+std::size_t Engine::bytes() const {
+  auto cap = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+  const Particles& p = sample_.particles;
+  std::size_t b = cap(p.x) + cap(p.y) + cap(p.vx) + cap(p.vy) + cap(p.omega) + cap(p.diameter) +
+                  cap(p.weight) + cap(p.size_class) + cap(p.id);
+  b += cap(state_.x) + cap(state_.y) + cap(state_.vx) + cap(state_.vy) + cap(state_.omega) +
+       cap(state_.diameter) + cap(state_.weight) + cap(state_.origin) + cap(state_.frozen);
+  b += cap(forces_.fx) + cap(forces_.fy) + cap(forces_.torque) + cap(forces_.stiffness) +
+       cap(forces_.spin_stiffness);
+  b +=
+      cap(search_) + cap(x0_) + cap(y0_) + cap(scratch_) + cap(scratch_index_) + cap(scratch_flag_);
+  b += grid_.bytes() + voidage_.bytes() + pass_.bytes() + springs_.bytes() + next_springs_.bytes();
+  return b;
+}
+
+void Engine::save_checkpoint(const std::string& path) const {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw std::runtime_error("cannot write checkpoint " + path);
+  out.write(kMagic, sizeof kMagic);
+  write_value(out, time_);
+  write_value(out, stats_);
+  write_value(out, facts_.contacts);
+  write_value(out, facts_.min_contact_mass);
+  for (const auto* v : {&state_.x, &state_.y, &state_.vx, &state_.vy, &state_.omega,
+                        &state_.diameter, &state_.weight, &search_})
+    write_vector(out, *v);
+  write_vector(out, state_.origin);
+  write_vector(out, state_.frozen);
+  write_vector(out, x0_);
+  write_vector(out, y0_);
+  write_value(out, lists_stale_);
+  write_value(out, resorted_at_);
+  const auto springs = springs_.sorted_entries();
+  const std::uint64_t count = springs.size();
+  write_value(out, count);
+  out.write(reinterpret_cast<const char*>(springs.data()),
+            std::streamsize(count * sizeof(PairHistory::Entry)));
+  integrator_->save(out);
+  if (!out) throw std::runtime_error("failed writing checkpoint " + path);
+}
+
+void Engine::load_checkpoint(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[sizeof kMagic];
+  in.read(magic, sizeof magic);
+  if (!in || std::memcmp(magic, kMagic, sizeof kMagic) != 0)
+    throw std::runtime_error("not a sedem checkpoint: " + path);
+  read_value(in, time_);
+  read_value(in, stats_);
+  facts_ = PassFacts{};
+  read_value(in, facts_.contacts);
+  read_value(in, facts_.min_contact_mass);
+  for (auto* v : {&state_.x, &state_.y, &state_.vx, &state_.vy, &state_.omega, &state_.diameter,
+                  &state_.weight, &search_})
+    read_vector(in, *v);
+  read_vector(in, state_.origin);
+  read_vector(in, state_.frozen);
+  read_vector(in, x0_);
+  read_vector(in, y0_);
+  read_value(in, lists_stale_);
+  read_value(in, resorted_at_);
+  std::uint64_t count = 0;
+  read_value(in, count);
+  std::vector<PairHistory::Entry> springs(count);
+  in.read(reinterpret_cast<char*>(springs.data()),
+          std::streamsize(count * sizeof(PairHistory::Entry)));
+  springs_.assign(&springs, 1);
+  integrator_->load(in);
+  if (!in) throw std::runtime_error("truncated checkpoint " + path);
+  // The lists as they were: built from the saved build positions, in the saved order.
+  if (!lists_stale_) {
+    grid_.build(state_.size(), x0_.data(), y0_.data(), search_.data());
+    pass_.build_lists(grid_, state_.size(), x0_.data(), y0_.data(), search_.data());
+  }
+  synced_step_ = -1;
 }
 
 }  // namespace sedem

@@ -1,7 +1,26 @@
 #pragma once
 
-#include <cstdint>
+// The DEM engine: Eq. 5 for every particle, forces of Sect. 3 and 4.2 (see forces.h), the
+// integrators of Sect. 4.6 (see integrators.h), neighbour search in neighbour_grid.h.
+// One step: voidage grid (Di Felice only) -> neighbour grid -> force pass -> integrator;
+// Candidate lists (Verlet) are rebuilt from the grid when a particle has moved more than a
+// half its radius since the last build (the search radii carry a margin of one radius); at most
+// every 16 steps the rebuild first re-sorts the state in grid order. Every 64 steps resting
+// particles below the lowest instrument are frozen. A blow-up throws InstabilityError.
 
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/engine/engine_state.h"
+#include "core/engine/force_pass.h"
+#include "core/engine/forces.h"
+#include "core/engine/instability.h"
+#include "core/engine/integrators.h"
+#include "core/engine/neighbour_grid.h"
+#include "core/engine/pair_history.h"
+#include "core/engine/voidage_grid.h"
 #include "core/model/particles.h"
 #include "core/model/sample.h"
 #include "core/scene/scene.h"
@@ -16,28 +35,71 @@ struct Snapshot {
 
 struct EngineStats {
   std::int64_t steps = 0;
-  double particle_steps = 0;
+  double particle_steps = 0;     // sum over steps of the particles integrated (not frozen)
+  double last_step = 0;          // s
+  std::size_t contacts = 0;      // particles touching something at the last step
+  std::size_t frozen = 0;        // particles frozen in the bed
+  double max_overlap_ratio = 0;  // largest overlap / smaller radius seen so far
 };
 
-// Advances the particles of a sample in time (Eq. 5).
 class Engine {
  public:
   Engine(const Scene& scene, Sample sample);
+  ~Engine();
 
   double time() const { return time_; }
-  const Particles& particles() const { return sample_.particles; }
-  const Sample& sample() const { return sample_; }
+  // The particles in the sample's order, brought up to date on demand.
+  const Particles& particles() const;
+  const Sample& sample() const;
   const EngineStats& stats() const { return stats_; }
 
-  // Advances to exactly `t` (no-op if t <= time()).
+  // Advances to exactly `t` (no-op if t <= time()). Throws InstabilityError on a blow-up.
   void advance_to(double t);
-  Snapshot snapshot() const { return Snapshot{time_, sample_.particles}; }
+  // One step of the integrator's choosing (the last one shortened to land on `limit`).
+  void step(double limit);
+  Snapshot snapshot() const { return Snapshot{time_, particles()}; }
+
+  // The full state (positions, velocities, spins, frozen flags, tangential springs, time,
+  // step rule): resuming with the same scene, sample and thread count continues bit for bit.
+  void save_checkpoint(const std::string& path) const;
+  void load_checkpoint(const std::string& path);
+
+  const char* integrator_name() const { return integrator_->name(); }
+  int threads() const { return threads_; }
+  double freeze_height() const { return freeze_height_; }
+  // Heap bytes held by the engine, its copy of the sample included.
+  std::size_t bytes() const;
+  // Kinetic energy of translation and rotation, J (a diagnostic for tests and benchmarks).
+  double kinetic_energy() const;
 
  private:
+  void freeze_resting();
+  void resort();
+  void rebuild_lists();
+  bool moved_beyond_margin() const;
+
   Scene scene_;
-  Sample sample_;
+  mutable Sample sample_;
+  mutable std::int64_t synced_step_ = -1;
+  EngineState state_;
+  ForceAccumulators forces_;
+  std::vector<double> search_;   // search radius: radius + lubrication reach + skins + margin
+  std::vector<double> x0_, y0_;  // positions when the candidate lists were built
+  bool lists_stale_ = true;
+  std::int64_t resorted_at_ = 0;
+  std::vector<double> scratch_;
+  std::vector<std::uint32_t> scratch_index_;
+  std::vector<std::uint8_t> scratch_flag_;
+  ForceModel model_;
+  NeighbourGrid grid_;
+  VoidageGrid voidage_;
+  ForcePass pass_;
+  PairHistory springs_, next_springs_;
+  PassFacts facts_;
+  std::unique_ptr<Integrator> integrator_;
+  int threads_ = 1;
+  double freeze_height_ = 0;
   double time_ = 0;
-  double step_ = 0;
   EngineStats stats_;
 };
 

@@ -21,6 +21,11 @@ void describe(ForcesConfig& c, Schema& s) {
            "Intensity of Eq. 10 (paper: 10).");
   s.number("forces.lubrication_range", &c.lubrication_range, "", 1, 1e-3, 1e6,
            "Range of Eq. 10, in inverse particle radii (paper: 10).");
+  s.number("forces.voidage_cell_mm", &c.voidage_cell, "mm", 1e-3, 1e-3, 1e3,
+           "Side of the square cells in which the local voidage of the drag is computed.")
+      .min_exclusive = true;
+  s.number("forces.min_voidage", &c.min_voidage, "", 1, 0.01, 1,
+           "Floor on the grid's voidage, where statistical weights pack more than a bed.");
 }
 
 void describe(IntegratorConfig& c, Schema& s) {
@@ -29,6 +34,12 @@ void describe(IntegratorConfig& c, Schema& s) {
            "stable steps.");
   s.number("integrator.step_factor", &c.step_factor, "", 1, 1e-6, 1e9,
            "Time step as a multiple of the smallest response time t_tr (paper: 0.1).");
+  s.flag("integrator.adaptive", &c.adaptive,
+         "reference: grow the step once every particle is at terminal velocity (Sect. 4.6).");
+  s.number("integrator.fast_step_factor", &c.fast_step_factor, "", 1, 1e-6, 1e9,
+           "exponential: time step as a multiple of the smallest response time t_tr.");
+  s.flag("integrator.freeze_settled", &c.freeze_settled,
+         "Freeze particles resting in the bed below the lowest instrument.");
   s.number("integrator.max_step_s", &c.max_step, "s", 1, 1e-12, 1e6, "Upper bound on the step.");
   s.integer("integrator.threads", &c.threads, 0, 1024, "Worker threads; 0 uses every core.");
 }

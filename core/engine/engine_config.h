@@ -19,13 +19,18 @@ struct ForcesConfig {
   bool lubrication = false;
   double lubrication_intensity = 10;  // the first 10 of Eq. 10
   double lubrication_range = 10;      // the second 10 of Eq. 10
+  double voidage_cell = 4e-3;         // m, side of the square cells of the voidage grid
+  double min_voidage = 0.3;           // floor on the grid's voidage (a packed bed's ~0.4)
 };
 
 // How Eq. 5 is advanced in time (Sect. 4.6).
 struct IntegratorConfig {
   std::string method = "exponential";  // reference | exponential
   double step_factor = 0.1;            // reference: dt = factor * min t_tr (paper: 0.1)
+  bool adaptive = true;                // reference: the growth rule of Sect. 4.6
+  double fast_step_factor = 100;       // exponential: dt = factor * min t_tr
   double max_step = 1.0;               // s, upper bound on any step
+  bool freeze_settled = true;          // freeze resting particles below every instrument
   std::int64_t threads = 0;            // 0: all cores
 };
 

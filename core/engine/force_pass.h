@@ -1,0 +1,60 @@
+#pragma once
+
+// One parallel pass over the particles (in the grid's spatial order) that sums, for each
+// particle, weight and buoyancy, wall contacts, pair contacts with friction and lubrication.
+// Same-level pairs are evaluated from both sides (each particle writes only its own sums);
+// pairs across grid levels are evaluated once, from the finer side, which queues the partner's
+// share; the queues are applied after the pass in thread order. No atomics: the result is
+// deterministic for a given thread count.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/engine/engine_state.h"
+#include "core/engine/forces.h"
+#include "core/engine/instability.h"
+#include "core/engine/neighbour_grid.h"
+#include "core/engine/pair_history.h"
+
+namespace sedem {
+
+struct PassFacts {
+  std::size_t contacts = 0;      // particles touching a wall or another particle
+  double min_contact_mass = 0;   // lightest particle touching or within the skin (0 if none)
+  double max_overlap_ratio = 0;  // overlap / smaller radius, worst pair or wall
+  Blowup blowup;
+};
+
+class ForcePass {
+ public:
+  void configure(const ForceModel& model, int threads);
+  // Candidate lists (Verlet): for each particle, in the grid's order, the partners found by
+  // the grid within radius[i] + radius[j] of the positions (x0, y0). Valid while no particle
+  // has moved more than half the margin the radii carry beyond the interaction range.
+  void build_lists(const NeighbourGrid& grid, std::size_t n, const double* x0, const double* y0,
+                   const double* radius);
+  void run(const EngineState& s, const NeighbourGrid& grid, const PairHistory& old_springs,
+           PairHistory& new_springs, double dt, ForceAccumulators& out, PassFacts& facts);
+  std::size_t bytes() const;
+
+ private:
+  struct Reaction {
+    std::uint32_t j;
+    double fx, fy, torque, stiffness, spin_stiffness;
+  };
+  struct ThreadFacts {
+    std::size_t contacts = 0;
+    double min_contact_mass = 0, max_overlap_ratio = 0;
+    Blowup blowup;
+  };
+  ForceModel model_;
+  int threads_ = 1;
+  std::vector<std::vector<Reaction>> reactions_;
+  std::vector<std::vector<PairHistory::Entry>> springs_;
+  std::vector<ThreadFacts> facts_;
+  std::vector<std::vector<std::uint32_t>> local_lists_;
+  std::vector<std::uint32_t> list_start_, list_;
+};
+
+}  // namespace sedem

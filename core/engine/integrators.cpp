@@ -1,0 +1,241 @@
+#include "core/engine/integrators.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <istream>
+#include <ostream>
+#include <vector>
+
+#include "core/physics/drag.h"
+#include "core/physics/stokes.h"
+
+namespace sedem {
+
+double DragEvaluator::coefficient(double d, double speed, double x, double y) const {
+  switch (model->drag) {
+    case DragLaw::off:
+      return 0;
+    case DragLaw::stokes:
+      return 3.0 * std::numbers::pi * model->viscosity * d;
+    case DragLaw::di_felice: {
+      // drag::di_felice_coefficient with the cell's ln(eps) reused: eps^(2 - chi) as one exp.
+      // Tested against it in tests/engine.
+      const double eps = voidage->at(x, y), log_eps = voidage->log_at(x, y);
+      const double mu = model->viscosity;
+      const double re = model->fluid_density * eps * speed * d / mu;
+      const double root = 0.63 * std::sqrt(re) + 4.8;
+      double chi = 3.7;
+      if (re > 0) {
+        const double l = 1.5 - std::log10(re);
+        chi -= 0.65 * std::exp(-0.5 * l * l);
+      }
+      const double area = std::numbers::pi * d * d / 4.0;
+      return 0.5 * root * root * mu / (eps * d) * area * std::exp((2.0 - chi) * log_eps);
+    }
+  }
+  return 0;
+}
+
+namespace {
+
+// Per-thread partial results of an integration pass, reduced in thread order.
+struct ThreadSums {
+  double max_change = 0;  // velocity change / own terminal speed, free particles
+  double max_rate = 0;    // c/m, free particles
+  double max_speed = 0;
+  Blowup blowup;
+};
+
+void check(const EngineState& s, std::size_t i, double runaway, Blowup& b) {
+  if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) b.note(s.origin[i], "position", s.x[i]);
+  if (!std::isfinite(s.vx[i]) || !std::isfinite(s.vy[i])) b.note(s.origin[i], "velocity", s.vx[i]);
+  const double speed = std::hypot(s.vx[i], s.vy[i]);
+  if (speed > runaway) b.note(s.origin[i], "speed", speed);
+  if (!std::isfinite(s.omega[i])) b.note(s.origin[i], "angular velocity", s.omega[i]);
+}
+
+// `sums` is the caller's, reused every step (no allocation per step).
+template <class Body>
+ThreadSums integrate(int threads, std::size_t n, std::vector<ThreadSums>& sums, Body&& body) {
+  sums.resize(std::size_t(std::max(1, threads)));
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+    sums[std::size_t(omp_get_thread_num())] = ThreadSums{};
+    ThreadSums& mine = sums[std::size_t(omp_get_thread_num())];
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) body(i, mine);
+  }
+  ThreadSums total;
+  for (const ThreadSums& t : sums) {
+    total.max_change = std::max(total.max_change, t.max_change);
+    total.max_rate = std::max(total.max_rate, t.max_rate);
+    total.max_speed = std::max(total.max_speed, t.max_speed);
+    if (t.blowup.found && !total.blowup.found) total.blowup = t.blowup;
+  }
+  return total;
+}
+
+class ReferenceIntegrator final : public Integrator {
+ public:
+  ReferenceIntegrator(const IntegratorConfig& c, const IntegratorContext& x) : config_(c), ctx_(x) {
+    step_ = std::min(config_.max_step, config_.step_factor * ctx_.min_response_time);
+    ceiling_ = config_.max_step;
+  }
+  const char* name() const override { return "reference"; }
+
+  double next_step(const PassFacts& last) override {
+    double dt = step_;
+    if (last.min_contact_mass > 0) {
+      const ForceModel& m = *ctx_.model;
+      dt = std::min(dt, 0.1 * std::sqrt(last.min_contact_mass / (m.kn + m.kt)));
+    }
+    if (ctx_.model->contact && max_speed_ > 0)
+      dt = std::min(dt, 0.5 * ctx_.model->skin * ctx_.min_radius / max_speed_);
+    return dt;
+  }
+
+  void advance(EngineState& s, const ForceAccumulators& f, double dt, Blowup& blowup) override {
+    const ForceModel& m = *ctx_.model;
+    const bool spin = m.friction && m.contact;
+    const ThreadSums sums =
+        integrate(ctx_.threads, s.size(), sums_, [&](std::size_t i, ThreadSums& t) {
+          if (s.frozen[i]) return;
+          const double d = s.diameter[i];
+          const double mass = m.mass(d);
+          const double speed = std::hypot(s.vx[i], s.vy[i]);
+          const double c = ctx_.drag.coefficient(d, speed, s.x[i], s.y[i]);
+          const double ax = (f.fx[i] - c * s.vx[i]) / mass, ay = (f.fy[i] - c * s.vy[i]) / mass;
+          s.vx[i] += dt * ax;
+          s.vy[i] += dt * ay;
+          s.x[i] += dt * s.vx[i];
+          s.y[i] += dt * s.vy[i];
+          if (spin) s.omega[i] += dt * f.torque[i] / (0.1 * mass * d * d);
+          if (f.stiffness[i] == 0) {
+            const double ut = stokes::terminal_velocity(
+                d, m.particle_density, Fluid{m.fluid_density, m.viscosity, m.gravity});
+            t.max_change = std::max(t.max_change, dt * std::hypot(ax, ay) / ut);
+            t.max_rate = std::max(t.max_rate, c / mass);
+          }
+          t.max_speed = std::max(t.max_speed, std::hypot(s.vx[i], s.vy[i]));
+          check(s, i, ctx_.runaway_speed, t.blowup);
+        });
+    if (sums.blowup.found && !blowup.found) blowup = sums.blowup;
+    if (sums.max_rate > 0) rate_ = sums.max_rate;
+    max_speed_ = sums.max_speed;
+    adapt(sums.max_change);
+  }
+
+  void save(std::ostream& out) const override {
+    for (double v : {step_, ceiling_, window_change_, rate_, max_speed_})
+      out.write(reinterpret_cast<const char*>(&v), 8);
+    out.write(reinterpret_cast<const char*>(&window_steps_), 8);
+    out.write(reinterpret_cast<const char*>(&grown_), 1);
+  }
+  void load(std::istream& in) override {
+    for (double* v : {&step_, &ceiling_, &window_change_, &rate_, &max_speed_})
+      in.read(reinterpret_cast<char*>(v), 8);
+    in.read(reinterpret_cast<char*>(&window_steps_), 8);
+    in.read(reinterpret_cast<char*>(&grown_), 1);
+  }
+
+ private:
+  void adapt(double change) {
+    if (!config_.adaptive) return;
+    if (change > 5e-2 && grown_) {  // unstable change after growth: back off, remember
+      ceiling_ = 0.9 * step_;
+      step_ = ceiling_;
+      window_steps_ = 0;
+      window_change_ = 0;
+      return;
+    }
+    window_change_ = std::max(window_change_, change);
+    if (++window_steps_ < 100) return;
+    if (window_change_ < 1e-3) {
+      double grown = std::min(1.1 * step_, std::min(ceiling_, config_.max_step));
+      if (rate_ > 0) grown = std::min(grown, 1.9 / rate_);
+      grown_ = grown_ || grown > step_;
+      step_ = std::max(step_, grown);
+    }
+    window_steps_ = 0;
+    window_change_ = 0;
+  }
+
+  IntegratorConfig config_;
+  IntegratorContext ctx_;
+  std::vector<ThreadSums> sums_;
+  double step_ = 0, ceiling_ = 0, window_change_ = 0, rate_ = 0, max_speed_ = 0;
+  std::int64_t window_steps_ = 0;
+  bool grown_ = false;
+};
+
+class ExponentialIntegrator final : public Integrator {
+ public:
+  ExponentialIntegrator(const IntegratorConfig& c, const IntegratorContext& x)
+      : config_(c), ctx_(x) {
+    step_ = std::min(config_.max_step, config_.fast_step_factor * ctx_.min_response_time);
+    if (ctx_.model->contact && ctx_.max_terminal_speed > 0)
+      step_ = std::min(step_, ctx_.min_radius / ctx_.max_terminal_speed);
+  }
+  const char* name() const override { return "exponential"; }
+  double next_step(const PassFacts&) override { return step_; }
+
+  void advance(EngineState& s, const ForceAccumulators& f, double dt, Blowup& blowup) override {
+    const ForceModel& m = *ctx_.model;
+    const bool spin = m.friction && m.contact;
+    const ThreadSums sums =
+        integrate(ctx_.threads, s.size(), sums_, [&](std::size_t i, ThreadSums& t) {
+          if (s.frozen[i]) return;
+          const double d = s.diameter[i];
+          const double mass = m.mass(d);
+          const double vx = s.vx[i], vy = s.vy[i];
+          const double c =
+              ctx_.drag.coefficient(d, std::hypot(vx, vy), s.x[i], s.y[i]) + f.stiffness[i] * dt;
+          if (c > 0) {
+            const double rate = c / mass;
+            const double decay = std::exp(-dt * rate);
+            const double relax = -std::expm1(-dt * rate) / rate;  // integral of the decay over dt
+            const double ux = f.fx[i] / c, uy = f.fy[i] / c;      // velocity the step tends to
+            s.x[i] += ux * dt + (vx - ux) * relax;
+            s.y[i] += uy * dt + (vy - uy) * relax;
+            s.vx[i] = ux + (vx - ux) * decay;
+            s.vy[i] = uy + (vy - uy) * decay;
+          } else {
+            const double ax = f.fx[i] / mass, ay = f.fy[i] / mass;
+            s.x[i] += dt * (vx + 0.5 * dt * ax);
+            s.y[i] += dt * (vy + 0.5 * dt * ay);
+            s.vx[i] += dt * ax;
+            s.vy[i] += dt * ay;
+          }
+          if (spin) {
+            const double inertia = 0.1 * mass * d * d;
+            s.omega[i] = (inertia * s.omega[i] + dt * f.torque[i]) /
+                         (inertia + f.spin_stiffness[i] * dt * dt);
+          }
+          check(s, i, ctx_.runaway_speed, t.blowup);
+        });
+    if (sums.blowup.found && !blowup.found) blowup = sums.blowup;
+  }
+
+  void save(std::ostream& out) const override {
+    out.write(reinterpret_cast<const char*>(&step_), 8);
+  }
+  void load(std::istream& in) override { in.read(reinterpret_cast<char*>(&step_), 8); }
+
+ private:
+  IntegratorConfig config_;
+  IntegratorContext ctx_;
+  std::vector<ThreadSums> sums_;
+  double step_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Integrator> make_integrator(const IntegratorConfig& config,
+                                            const IntegratorContext& context) {
+  if (config.method == "reference") return std::make_unique<ReferenceIntegrator>(config, context);
+  return std::make_unique<ExponentialIntegrator>(config, context);
+}
+
+}  // namespace sedem

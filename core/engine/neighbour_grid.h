@@ -1,0 +1,94 @@
+#pragma once
+
+// Neighbour search for sizes spanning 1:28 and more: a hierarchy of square cell grids, cell
+// sides s_l = s_0 2^l, every particle stored in the finest level whose cells are at least its
+// search diameter. A particle looks for partners in its own level and the coarser ones only,
+// 3 x 3 cells in each, so a small grain never scans the cells of a fine grid around a large one,
+// nor a large grain the many small cells it covers; pairs across levels are found once, from
+// the finer side. The grids are not stored densely (the column is 10^5 small cells tall):
+// cells are hashed to buckets (key mod 2^k, so a row of cells stays contiguous) and the
+// particles counting-sorted by bucket every step. Memory: ~3 ints per particle.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace sedem {
+
+class NeighbourGrid {
+ public:
+  // `radius[i]` is the search radius of i (its radius plus half the interaction range);
+  // i and j may interact when their distance is below radius[i] + radius[j].
+  void configure(double min_search_diameter, double max_search_diameter, double half_width,
+                 double height);
+  void build(std::size_t n, const double* x, const double* y, const double* radius);
+
+  // Calls visit(j) for every j != i stored in a level >= level(i) whose cell lies within
+  // radius[i] + the level's largest radius of i. Same-level pairs are thus seen from both
+  // sides; cross-level pairs only from the finer side (cross_level(j, i) tells them apart).
+  template <class Visit>
+  void for_each_candidate(std::size_t i, const double* x, const double* y, const double* radius,
+                          Visit&& visit) const;
+
+  std::uint8_t level(std::size_t i) const { return level_[i]; }
+  // Particles in bucket order: iterating in this order keeps neighbours cache-local.
+  const std::vector<std::uint32_t>& order() const { return sorted_; }
+  int level_count() const { return levels_; }
+  std::size_t bytes() const;
+
+ private:
+  std::uint64_t key(int level, std::int64_t cx, std::int64_t cy) const {
+    return offset_[level] + std::uint64_t(cy) * std::uint64_t(columns_[level]) + std::uint64_t(cx);
+  }
+  std::int64_t column(int level, double x) const;
+  std::int64_t row(int level, double y) const;
+
+  int levels_ = 1;
+  double cell0_ = 1, half_width_ = 0, height_ = 0;
+  std::vector<double> cell_, inverse_cell_;
+  std::vector<std::int64_t> columns_, rows_;
+  std::vector<std::uint64_t> offset_;
+  std::uint64_t mask_ = 0;
+  std::vector<std::uint8_t> level_;
+  std::vector<std::uint32_t> bucket_, sorted_, start_;
+  std::vector<double> level_max_radius_;
+};
+
+inline std::int64_t NeighbourGrid::column(int level, double x) const {
+  std::int64_t c = std::int64_t((x + half_width_) * inverse_cell_[level]);
+  if (x + half_width_ < 0) c = 0;
+  return c >= columns_[level] ? columns_[level] - 1 : c;
+}
+
+inline std::int64_t NeighbourGrid::row(int level, double y) const {
+  std::int64_t r = std::int64_t(y * inverse_cell_[level]);
+  if (y < 0) r = 0;
+  return r >= rows_[level] ? rows_[level] - 1 : r;
+}
+
+template <class Visit>
+void NeighbourGrid::for_each_candidate(std::size_t i, const double* x, const double* y,
+                                       const double* radius, Visit&& visit) const {
+  const int own = level_[i];
+  const double xi = x[i], yi = y[i];
+  for (int l = own; l < levels_; ++l) {
+    const double reach = level_max_radius_[l];
+    if (reach < 0) continue;  // empty level
+    const double r = reach + radius[i];
+    const std::int64_t c0 = column(l, xi - r), c1 = column(l, xi + r);
+    const std::int64_t r0 = row(l, yi - r), r1 = row(l, yi + r);
+    for (std::int64_t cy = r0; cy <= r1; ++cy) {
+      for (std::int64_t cx = c0; cx <= c1; ++cx) {
+        const std::uint64_t b = key(l, cx, cy) & mask_;
+        for (std::uint32_t k = start_[b], e = start_[b + 1]; k < e; ++k) {
+          const std::uint32_t j = sorted_[k];
+          // Buckets are shared by distant cells: keep only the particles of this cell.
+          if (level_[j] != l || j == i || column(l, x[j]) != cx || row(l, y[j]) != cy) continue;
+          visit(j);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace sedem

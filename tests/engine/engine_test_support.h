@@ -1,0 +1,63 @@
+#pragma once
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "core/engine/engine.h"
+#include "core/scene/scene.h"
+
+namespace sedem::test {
+
+struct Grain {
+  double x, y, d;
+  double vx = 0, vy = 0;
+  double weight = 1;
+};
+
+inline Sample sample_of(const std::vector<Grain>& grains) {
+  Sample s;
+  s.particles.resize(grains.size());
+  for (std::size_t i = 0; i < grains.size(); ++i) {
+    auto& p = s.particles;
+    p.x[i] = grains[i].x;
+    p.y[i] = grains[i].y;
+    p.vx[i] = grains[i].vx;
+    p.vy[i] = grains[i].vy;
+    p.diameter[i] = grains[i].d;
+    p.weight[i] = grains[i].weight;
+    p.id[i] = std::uint32_t(100 + i);
+  }
+  return s;
+}
+
+// `count` grains of the given sizes at random in a box, no two overlapping by more than a
+// fraction `overlap` of the smaller diameter (deterministic).
+template <class Size>
+std::vector<Grain> scattered(int count, double x0, double x1, double y0, double y1, Size&& size,
+                             unsigned seed, double overlap = 0.05) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Grain> g;
+  while (int(g.size()) < count) {
+    const double d = size(int(g.size()));
+    const Grain c{x0 + (x1 - x0) * u(rng), y0 + (y1 - y0) * u(rng), d};
+    bool ok = c.y > 0.5 * d;
+    for (const Grain& o : g)
+      ok = ok && std::hypot(o.x - c.x, o.y - c.y) > 0.5 * (o.d + d) - overlap * std::min(o.d, d);
+    if (ok) g.push_back(c);
+  }
+  return g;
+}
+
+// A scene with the given drag and integrator, nothing frozen, one thread unless told.
+inline Scene scene_with(const std::string& drag, const std::string& method, int threads = 1) {
+  Scene scene;
+  scene.forces.drag = drag;
+  scene.integrator.method = method;
+  scene.integrator.freeze_settled = false;
+  scene.integrator.threads = threads;
+  return scene;
+}
+
+}  // namespace sedem::test

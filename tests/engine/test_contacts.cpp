@@ -1,0 +1,162 @@
+// Contacts (Eqs. 1-4) against hand computation: a grain resting on the bottom, a head-on
+// collision, the rolling/sliding switch, and momentum conservation in a 1:28 cluster.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "core/engine/forces.h"
+#include "tests/engine/engine_test_support.h"
+
+namespace sedem {
+namespace {
+
+using test::Grain;
+using test::sample_of;
+using test::scene_with;
+
+double net_weight(double d) {
+  return 1500 * 9.81 * std::numbers::pi / 6 * d * d * d;
+}
+
+// At rest on the floor the spring carries the net weight: overlap = (m - m_f) g / K_N.
+TEST(EngineContact, GrainRestsOnTheBottom) {
+  for (const char* method : {"exponential", "reference"}) {
+    Scene scene = scene_with("stokes", method);
+    const double d = 50e-6;
+    Engine engine(scene, sample_of({{0, 0.5 * d + 2e-6, d}}));
+    // ~30 drag response times after landing; the reference bounces (restitution 1) until
+    // the drag has taken the energy.
+    engine.advance_to(std::string(method) == "reference" ? 0.012 : 0.2);
+    const double overlap = 0.5 * d - engine.particles().y[0];
+    const double expected = net_weight(d) / scene.forces.stiffness_normal;
+    // The reference still rings (restitution 1, drag the only damping) by ~1e-3.
+    const double tolerance = std::string(method) == "reference" ? 1e-2 : 1e-6;
+    EXPECT_NEAR(overlap, expected, tolerance * expected) << method;
+    EXPECT_NEAR(engine.particles().vy[0], 0.0, 1e-6) << method;
+  }
+}
+
+// Two equal grains meet head on at +-v0 with no fluid: a linear spring of K_N between masses
+// m, reduced mass m/2: the largest overlap is 2 v0 sqrt(m / (2 K_N)), the contact lasts
+// pi sqrt(m / (2 K_N)), and they leave with their velocities reversed (restitution 1).
+TEST(EngineContact, HeadOnCollisionMatchesTheSpring) {
+  Scene scene = scene_with("off", "reference");
+  scene.forces.weight = scene.forces.buoyancy = false;
+  scene.integrator.max_step = 1e-10;
+  scene.integrator.adaptive = false;
+  const double d = 20e-6, v0 = 1e-3, gap = 1e-8;
+  Engine engine(scene,
+                sample_of({{-0.5 * d - gap, 0.2, d, v0, 0}, {0.5 * d + gap, 0.2, d, -v0, 0}}));
+  const double m = 2500 * std::numbers::pi / 6 * d * d * d;
+  const double duration = std::numbers::pi * std::sqrt(m / (2 * scene.forces.stiffness_normal));
+  const double t_meet = gap / v0;
+  double max_overlap = 0;
+  for (int k = 1; k <= 400; ++k) {
+    engine.advance_to(t_meet + 1.2 * duration * k / 400);
+    const auto& p = engine.particles();
+    max_overlap = std::max(max_overlap, d - (p.x[1] - p.x[0]));
+  }
+  const double expected = 2 * v0 * std::sqrt(m / (2 * scene.forces.stiffness_normal));
+  EXPECT_NEAR(max_overlap, expected, 2e-3 * expected);
+  EXPECT_NEAR(engine.particles().vx[0], -v0, 1e-3 * v0);
+  EXPECT_NEAR(engine.particles().vx[1], v0, 1e-3 * v0);
+  EXPECT_NEAR(engine.particles().vy[0], 0.0, 1e-12);
+}
+
+// Eq. 4 by hand: below mu f_N the tangential spring holds (rolling), above it the contact
+// slides at mu f_N and the spring is reset to the slip limit.
+TEST(ContactForce, RollingAndSlidingAgainstHandComputation) {
+  ForceModel m;
+  m.kn = 1e3;
+  m.kt = 500;
+  m.mu = 0.5;
+  const double overlap = 1e-9, ra = 5e-6, rb = 10e-6, dt = 1e-6;
+  // n along +x: t = (0, 1). a moves up at 1e-4 m/s against b at rest, no spin.
+  const double fn = m.kn * overlap;  // 1e-6 N
+  {
+    const ContactResult c = contact_force(m, 1, 0, overlap, ra, rb, 0, 1e-4, 0, 0, 0, 0, 0, dt);
+    const double g = 1e-4 * dt;  // 1e-10 m: K_T g = 5e-8 N < mu f_N = 5e-7 N
+    EXPECT_DOUBLE_EQ(c.fx, -fn);
+    EXPECT_DOUBLE_EQ(c.fy, -m.kt * g);
+    EXPECT_DOUBLE_EQ(c.spring, g);
+    EXPECT_DOUBLE_EQ(c.torque_a, ra * -m.kt * g);
+    EXPECT_DOUBLE_EQ(c.torque_b, rb * -m.kt * g);
+  }
+  {
+    // An accumulated spring of 2e-9 m: K_T g = 1e-6 N > mu f_N: slides.
+    const ContactResult c =
+        contact_force(m, 1, 0, overlap, ra, rb, 0, 1e-4, 0, 0, 0, 0, 2e-9 - 1e-10, dt);
+    EXPECT_DOUBLE_EQ(c.fy, -m.mu * fn);
+    EXPECT_DOUBLE_EQ(c.spring, m.mu * fn / m.kt);
+  }
+  {
+    // Spin counts: a spinning at w with its contact point moving at w ra along t.
+    const double w = 1e-4 / ra;
+    const ContactResult c = contact_force(m, 1, 0, overlap, ra, rb, 0, 0, w, 0, 0, 0, 0, dt);
+    EXPECT_DOUBLE_EQ(c.fy, -m.kt * 1e-4 * dt);
+  }
+}
+
+// Two grains pressed together along y slide past each other along x (no fluid, no gravity):
+// once the tangential spring reaches mu f_N (after ~1.5 ns) the contact slides, so the
+// tangential impulse each grain receives is mu times the normal one, slightly less for the
+// short sticking start. Equal grains: momentum conserved, equal spins.
+TEST(EngineContact, SlidingContactTransfersMuTimesTheNormalImpulse) {
+  Scene scene = scene_with("off", "reference");
+  scene.forces.weight = scene.forces.buoyancy = false;
+  scene.forces.friction = 0.3;
+  scene.integrator.max_step = 2e-11;
+  scene.integrator.adaptive = false;
+  const double d = 20e-6, v = 0.1;
+  Engine engine(scene, sample_of({{0, 0.2, d, v, 0}, {0, 0.2 + d - 1e-9, d, -v, 0}}));
+  engine.advance_to(2e-8);
+  const auto& p = engine.particles();
+  const double tangential = v - p.vx[0], normal = -p.vy[0];  // impulses / m on grain 0
+  EXPECT_GT(normal, 0);
+  EXPECT_LE(tangential, 0.3 * normal * (1 + 1e-9));
+  EXPECT_GE(tangential, 0.9 * 0.3 * normal);
+  EXPECT_NEAR(p.vx[0] + p.vx[1], 0.0, 1e-15);
+  EXPECT_NEAR(p.vy[0] + p.vy[1], 0.0, 1e-15);
+  EXPECT_NE(p.omega[0], 0.0);
+  EXPECT_NEAR(p.omega[0], p.omega[1], 1e-9 * std::abs(p.omega[0]));
+}
+
+// Every pair force has its opposite: with no fluid and no gravity, a random 1:28 cluster of
+// overlapping grains flying apart keeps its total momentum at zero.
+TEST(EngineContact, PairForcesSumToZero) {
+  for (const char* method : {"reference", "exponential"}) {
+    Scene scene = scene_with("off", method, 2);
+    scene.forces.weight = scene.forces.buoyancy = false;
+    // Soft springs so that deep random overlaps fly apart at moderate speeds.
+    scene.forces.stiffness_normal = scene.forces.stiffness_tangential = 1e-3;
+    scene.integrator.max_step = 1e-9;
+    scene.integrator.fast_step_factor = 1e-3;
+    // Packed tightly enough that most grains touch, 1:28 in size.
+    const auto grains = test::scattered(
+        150, -200e-6, 200e-6, 0.2, 0.2 + 400e-6,
+        [](int k) { return k % 10 == 0 ? 70e-6 : 2.5e-6 + k % 7 * 1e-6; }, 3, 0.5);
+    Engine engine(scene, sample_of(grains));
+    engine.advance_to(5e-8);
+    const auto& p = engine.particles();
+    double px = 0, py = 0, scale = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const double m = std::pow(p.diameter[i], 3);
+      px += m * p.vx[i];
+      py += m * p.vy[i];
+      scale += m * std::hypot(p.vx[i], p.vy[i]);
+    }
+    EXPECT_GT(scale, 0) << method;
+    EXPECT_GT(engine.stats().max_overlap_ratio, 0.0) << method;
+    // The reference applies the pair forces as they are: exact to round-off. The exponential
+    // integrator's implicit contact damping (k dt per particle, see integrators.h) differs
+    // between partners and leaks momentum in proportion to k dt^2 / m (~1e-7 here).
+    const double tolerance = std::string(method) == "reference" ? 1e-12 : 1e-5;
+    EXPECT_LT(std::abs(px), tolerance * scale) << method;
+    EXPECT_LT(std::abs(py), tolerance * scale) << method;
+  }
+}
+
+}  // namespace
+}  // namespace sedem
