@@ -18,7 +18,15 @@ int main(int argc, char** argv) {
 
   RunOptions run_options;
   auto* run_cmd = cli.add_subcommand("run", "Simulate a scene and write its outputs");
-  run_cmd->add_option("scene", run_options.scene, "Scene file (TOML)")->required();
+  auto* scene_opt = run_cmd->add_option("scene", run_options.scene, "Scene file (TOML)");
+  auto* resume_opt = run_cmd->add_option(
+      "--resume", run_options.resume_dir,
+      "Go on with the run stopped by Ctrl-C or SIGTERM in this folder, from its checkpoint");
+  scene_opt->excludes(resume_opt);
+  run_cmd->callback([&] {
+    if (run_options.scene.empty() && run_options.resume_dir.empty())
+      throw CLI::RequiredError("a scene file or --resume DIR");
+  });
   run_cmd->add_option("--out", run_options.out_dir, "Output folder")->capture_default_str();
   run_cmd->add_option("--set", run_options.overrides,
                       "Override a scene key, key=value (repeatable)");

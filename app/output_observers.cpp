@@ -1,31 +1,56 @@
 #include "app/output_observers.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/fields/layer_fields.h"
 
 namespace sedem::app {
 
+namespace {
+
+// Series entries strictly before a resumed run's start stay; the one at the start is
+// written again by the resumed run.
+double keep_before(double resume_from) {
+  return std::nextafter(resume_from, -std::numeric_limits<double>::infinity());
+}
+
+}  // namespace
+
 ParticleSeriesObserver::ParticleSeriesObserver(std::vector<double> times, const Scene& scene,
-                                               const std::filesystem::path& out_dir)
-    : times_(std::move(times)), writer_(out_dir, scene.sample.particle_density) {}
+                                               const std::filesystem::path& out_dir,
+                                               double resume_from)
+    : times_(std::move(times)),
+      writer_(out_dir, scene.sample.particle_density, keep_before(resume_from)) {}
 
 namespace {
 
-render::ColumnAnimation::Options animation_options(const Scene& scene) {
+render::ColumnAnimation::Options animation_options(const Scene& scene, double resume_from) {
   render::ColumnAnimation::Options o;
   o.label = scene.name;
   o.panel_width = int(scene.output.frame_width);
   o.panel_height = int(scene.output.frame_height);
+  // The suspension starts uniform, 1/bands of the mass in each band: black at twice that,
+  // a scale that does not depend on which frame comes first.
+  o.full_scale_fraction = 2.0 / o.bands;
+  const auto times = every(scene.output.interval, scene.end_time);
+  o.first_frame =
+      int(std::count_if(times.begin(), times.end(), [&](double t) { return t < resume_from; }));
   return o;
 }
 
 }  // namespace
 
-ColumnFrameObserver::ColumnFrameObserver(const Scene& scene, const std::filesystem::path& out_dir)
+ColumnFrameObserver::ColumnFrameObserver(const Scene& scene, const std::filesystem::path& out_dir,
+                                         double resume_from)
     : times_(every(scene.output.interval, scene.end_time)),
-      animation_(out_dir, scene.cylinder, animation_options(scene)) {}
+      animation_(out_dir, scene.cylinder, animation_options(scene, resume_from)) {}
 
-FieldsObserver::FieldsObserver(const Scene& scene, const std::filesystem::path& out_dir)
-    : scene_(scene), times_(every(scene.output.interval, scene.end_time)), writer_(out_dir) {}
+FieldsObserver::FieldsObserver(const Scene& scene, const std::filesystem::path& out_dir,
+                               double resume_from)
+    : scene_(scene),
+      times_(every(scene.output.interval, scene.end_time)),
+      writer_(out_dir, keep_before(resume_from)) {}
 
 void FieldsObserver::observe(const Snapshot& snapshot) {
   const LayerFields f =
@@ -54,7 +79,7 @@ void ColumnFigureObserver::observe(const Snapshot& snapshot) {
 }
 
 RunObservers make_observers(const Scene& scene, const Sample& sample,
-                            const std::filesystem::path& out_dir, bool with_particle_files) {
+                            const std::filesystem::path& out_dir, ObserverStart start) {
   RunObservers r;
   const auto& ins = scene.instruments;
   if (ins.hydrometer || ins.buoyancy || ins.pipette) {
@@ -62,14 +87,16 @@ RunObservers make_observers(const Scene& scene, const Sample& sample,
     r.instruments = instruments.get();
     r.all.push_back(std::move(instruments));
   }
-  if (scene.output.particles && with_particle_files) {
+  if (scene.output.particles && start.write_particles) {
     std::vector<std::vector<double>> lists{every(scene.output.interval, scene.end_time)};
     if (r.instruments) lists.push_back(r.instruments->wanted_times());
-    r.all.push_back(std::make_unique<ParticleSeriesObserver>(merge_times(lists), scene, out_dir));
+    r.all.push_back(std::make_unique<ParticleSeriesObserver>(merge_times(lists), scene, out_dir,
+                                                             start.resume_from));
   }
-  if (scene.output.fields) r.all.push_back(std::make_unique<FieldsObserver>(scene, out_dir));
+  if (scene.output.fields)
+    r.all.push_back(std::make_unique<FieldsObserver>(scene, out_dir, start.resume_from));
   if (scene.output.frames) {
-    r.all.push_back(std::make_unique<ColumnFrameObserver>(scene, out_dir));
+    r.all.push_back(std::make_unique<ColumnFrameObserver>(scene, out_dir, start.resume_from));
     auto columns = std::make_unique<ColumnFigureObserver>(scene);
     r.columns = columns.get();
     r.all.push_back(std::move(columns));

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -18,7 +19,7 @@ namespace sedem::app {
 class ParticleSeriesObserver : public Observer {
  public:
   ParticleSeriesObserver(std::vector<double> times, const Scene& scene,
-                         const std::filesystem::path& out_dir);
+                         const std::filesystem::path& out_dir, double resume_from);
   std::string name() const override { return "particles"; }
   std::vector<double> wanted_times() const override { return times_; }
   void observe(const Snapshot& snapshot) override { writer_.write(snapshot); }
@@ -32,7 +33,7 @@ class ParticleSeriesObserver : public Observer {
 // zoom insets, on one grey scale for the whole sequence.
 class ColumnFrameObserver : public Observer {
  public:
-  ColumnFrameObserver(const Scene& scene, const std::filesystem::path& out_dir);
+  ColumnFrameObserver(const Scene& scene, const std::filesystem::path& out_dir, double resume_from);
   std::string name() const override { return "frames"; }
   std::vector<double> wanted_times() const override { return times_; }
   void observe(const Snapshot& snapshot) override { animation_.add(snapshot); }
@@ -45,7 +46,7 @@ class ColumnFrameObserver : public Observer {
 // fields.pvd + fields/*.vti at every output time: the layer density and concentration.
 class FieldsObserver : public Observer {
  public:
-  FieldsObserver(const Scene& scene, const std::filesystem::path& out_dir);
+  FieldsObserver(const Scene& scene, const std::filesystem::path& out_dir, double resume_from);
   std::string name() const override { return "fields"; }
   std::vector<double> wanted_times() const override { return times_; }
   void observe(const Snapshot& snapshot) override;
@@ -63,6 +64,7 @@ class ColumnFigureObserver : public Observer {
   std::string name() const override { return "fig11"; }
   std::vector<double> wanted_times() const override { return times_; }
   void observe(const Snapshot& snapshot) override;
+  bool accumulates() const override { return true; }
   const std::vector<render::ColumnState>& states() const { return states_; }
 
  private:
@@ -78,8 +80,15 @@ struct RunObservers {
   ColumnFigureObserver* columns = nullptr;    // in `all`; null when frames are off
 };
 
-// `with_particle_files`: false when the snapshots come from files already (sedem render).
+// How the observers start.
+struct ObserverStart {
+  // false when the snapshots come from the particle files already (sedem render).
+  bool write_particles = true;
+  // A resumed run: the series in out_dir keep what they hold before this time and go on.
+  double resume_from = -std::numeric_limits<double>::infinity();
+};
+
 RunObservers make_observers(const Scene& scene, const Sample& sample,
-                            const std::filesystem::path& out_dir, bool with_particle_files = true);
+                            const std::filesystem::path& out_dir, ObserverStart start = {});
 
 }  // namespace sedem::app

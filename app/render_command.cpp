@@ -38,7 +38,7 @@ LabelledResults render_one(const fs::path& dir, bool quiet) {
     throw RenderFailure(e.what(), exit_code::invalid_scene);
   }
   const Sample sample = build_sample(scene);
-  RunObservers observers = make_observers(scene, sample, dir, false);
+  RunObservers observers = make_observers(scene, sample, dir, {.write_particles = false});
   const auto entries = render::read_pvd(dir / "particles.pvd");
   if (entries.empty())
     throw RenderFailure((dir / "particles.pvd").string() + ": no particle files to render from",

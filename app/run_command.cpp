@@ -6,7 +6,9 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <optional>
 
 #include "app/engine_worker.h"
 #include "app/exit_codes.h"
@@ -17,11 +19,19 @@
 #include "app/test_outputs.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
+#include "render/series_reader.h"
 
 namespace sedem::app {
 namespace fs = std::filesystem;
 
 namespace {
+
+const char* kCheckpoint = "checkpoint.bin";
+
+struct Failure {
+  int status;
+  std::string message;
+};
 
 std::vector<double> schedule_of(const std::vector<std::unique_ptr<Observer>>& observers,
                                 double end_time) {
@@ -32,25 +42,65 @@ std::vector<double> schedule_of(const std::vector<std::unique_ptr<Observer>>& ob
   return merged;
 }
 
+// A resumed run: its scene as the interrupted run resolved it.
+Scene scene_of_run(const fs::path& dir) {
+  std::ifstream in(dir / "run.json");
+  if (!in)
+    throw Failure{exit_code::invalid_scene, (dir / "run.json").string() + ": cannot read it"};
+  const auto record = nlohmann::json::parse(in, nullptr, false);
+  if (record.is_discarded() || !record.contains("scene"))
+    throw Failure{exit_code::invalid_scene,
+                  (dir / "run.json").string() + ": not a sedem run record"};
+  if (record.value("status", "") == "complete")
+    throw Failure{exit_code::ok, dir.string() + " holds a complete run: nothing to resume"};
+  if (!fs::exists(dir / kCheckpoint))
+    throw Failure{exit_code::invalid_scene, dir.string() + ": no " + kCheckpoint +
+                                                " to resume from (only a run stopped by "
+                                                "Ctrl-C or SIGTERM leaves one)"};
+  try {
+    return scene_from_json(record["scene"], (dir / "run.json").string());
+  } catch (const SceneError& e) {
+    throw Failure{exit_code::invalid_scene, e.what()};
+  }
+}
+
+// The observers that accumulate see the saved snapshots before `until` again, so that a
+// resumed run's readings are those of a run that never stopped.
+void replay(const RunObservers& observers, const fs::path& dir, double until) {
+  bool any = false;
+  for (const auto& o : observers.all) any = any || o->accumulates();
+  if (!any) return;
+  for (const auto& [time, file] : render::read_pvd(dir / "particles.pvd")) {
+    if (time >= until) break;
+    const Snapshot snap = render::read_particles_vtp(dir / file);
+    for (const auto& o : observers.all)
+      if (o->accumulates() && contains_time(o->wanted_times(), snap.time)) o->observe(snap);
+  }
+}
+
 }  // namespace
 
 int run(const RunOptions& options) {
   auto& qt = *QCoreApplication::instance();
   qRegisterMetaType<std::shared_ptr<const Snapshot>>();
+  const bool resuming = !options.resume_dir.empty();
+  const fs::path out = resuming ? options.resume_dir : options.out_dir;
 
   Scene scene;
   Sample sample;
   try {
-    scene = load_scene(options.scene, options.overrides);
+    scene = resuming ? scene_of_run(out) : load_scene(options.scene, options.overrides);
     sample = build_sample(scene);
   } catch (const SceneError& e) {
     std::cerr << "sedem: invalid scene: " << e.what() << '\n';
     return exit_code::invalid_scene;
+  } catch (const Failure& f) {
+    std::cerr << "sedem: " << f.message << '\n';
+    return f.status;
   }
 
-  const fs::path out = options.out_dir;
   RunRecord record;
-  record.scene_file = options.scene;
+  record.scene_file = resuming ? (out / "run.json").string() : options.scene;
   record.seed = scene.sample.seed;
   record.particle_count = sample.particles.size();
   try {
@@ -61,21 +111,33 @@ int run(const RunOptions& options) {
     return exit_code::output_unwritable;
   }
 
+  Engine engine(scene, sample);  // a copy: the observers need the sample too
+  ObserverStart start;
+  if (resuming) {
+    try {
+      engine.load_checkpoint((out / kCheckpoint).string());
+    } catch (const std::exception& e) {
+      std::cerr << "sedem: cannot resume from " << out / kCheckpoint << ": " << e.what() << '\n';
+      return exit_code::invalid_scene;
+    }
+    start.resume_from = engine.time();
+  }
   if (!options.quiet)
-    std::printf("sedem: %s: %zu particles in %zu sizes, %.0f s to simulate, output in %s\n",
-                scene.name.c_str(), sample.particles.size(), sample.classes.size(), scene.end_time,
+    std::printf("sedem: %s: %zu particles in %zu sizes, %s %.0f s, output in %s\n",
+                scene.name.c_str(), sample.particles.size(), sample.classes.size(),
+                resuming ? "resuming at" : "to simulate", resuming ? engine.time() : scene.end_time,
                 out.c_str());
 
   RunObservers run_observers;
   try {
-    run_observers = make_observers(scene, sample, out);
+    run_observers = make_observers(scene, sample, out, start);
+    if (resuming) replay(run_observers, out, engine.time());
   } catch (const std::exception& e) {
     std::cerr << "sedem: cannot prepare the outputs in " << out << ": " << e.what() << '\n';
     return exit_code::output_unwritable;
   }
 
   auto& observers = run_observers.all;
-  Engine engine(scene, std::move(sample));
   EngineWorker worker(engine, schedule_of(observers, scene.end_time));
   QThread thread;
   worker.moveToThread(&thread);
@@ -121,9 +183,19 @@ int run(const RunOptions& options) {
   thread.wait();
   progress.done();
 
+  // The engine thread has ended: the engine rests between two steps.
+  if (status == exit_code::interrupted) {
+    try {
+      engine.save_checkpoint((out / kCheckpoint).string());
+    } catch (const std::exception& e) {
+      record.message = std::string("the checkpoint could not be written: ") + e.what();
+    }
+  } else if (status == exit_code::ok) {
+    fs::remove(out / kCheckpoint);
+  }
   try {
     for (auto& o : observers) o->finish();
-    if (run_observers.instruments) record.results = write_test_outputs(scene, run_observers, out);
+    record.results = write_test_outputs(scene, run_observers, out);
   } catch (const std::exception& e) {
     record.message = std::string("writing the test results failed: ") + e.what();
     if (status == exit_code::ok || status == exit_code::interrupted) status = exit_code::io_failure;
@@ -142,8 +214,8 @@ int run(const RunOptions& options) {
     if (status == exit_code::ok) status = exit_code::io_failure;
   }
   if (status == exit_code::interrupted)
-    std::cerr << "sedem: stopped at t = " << engine.time() << " s; what was computed is in " << out
-              << '\n';
+    std::cerr << "sedem: stopped at t = " << engine.time() << " s; what was computed is in "
+              << out.string() << "; go on with: sedem run --resume " << out.string() << '\n';
   else if (status != exit_code::ok)
     std::cerr << "sedem: " << record.message << '\n';
   else if (!options.quiet)

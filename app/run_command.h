@@ -8,6 +8,7 @@ namespace sedem::app {
 struct RunOptions {
   std::string scene;
   std::string out_dir = "out";
+  std::string resume_dir;  // set: go on with the interrupted run in this folder
   std::vector<std::string> overrides;
   bool quiet = false;
 };

@@ -9,7 +9,10 @@ namespace sedem::render {
 
 ColumnAnimation::ColumnAnimation(const std::filesystem::path& out_dir, const Cylinder& cylinder,
                                  Options options)
-    : dir_(out_dir), cylinder_(cylinder), options_(std::move(options)) {
+    : dir_(out_dir),
+      cylinder_(cylinder),
+      options_(std::move(options)),
+      count_(options_.first_frame) {
   std::filesystem::create_directories(dir_ / "frames");
 }
 

@@ -21,6 +21,7 @@ class ColumnAnimation {
     int panel_height = 560;
     int bands = 40;  // the paper's 4000 layers in bands of 100
     double full_scale_fraction = 0;
+    int first_frame = 0;  // number of the first frame written (a resumed run goes on)
   };
 
   ColumnAnimation(const std::filesystem::path& out_dir, const Cylinder& cylinder, Options options);

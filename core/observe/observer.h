@@ -21,6 +21,10 @@ class Observer {
   virtual void observe(const Snapshot& snapshot) = 0;
   // After the last snapshot, or when the run is stopped early: flush what was computed.
   virtual void finish() {}
+  // True for an observer whose result depends on every snapshot it has seen (readings,
+  // profiles): a resumed run shows it the saved snapshots again before going on. A writer
+  // of per-snapshot files returns false: its files are already there.
+  virtual bool accumulates() const { return false; }
 };
 
 // Hands `snapshot` to every observer that asked for its time.

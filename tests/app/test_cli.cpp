@@ -12,6 +12,7 @@
 
 #include "cli_runner.h"
 #include "render/offscreen_view.h"
+#include "render/series_reader.h"
 
 namespace sedem {
 namespace {
@@ -105,7 +106,7 @@ TEST(Cli, InterruptedRunSaysSoAndKeepsWhatItWrote) {
   fs::remove_all(out);
   // A long run, stopped by SIGTERM after a moment.
   const std::string cmd = "run " + kDemo + " --out " + out.string() +
-                          " --set run.end_time_s=1e6 --set output.frames=false --quiet & "
+                          " --set run.end_time_s=1e6 --set output.frames=false --quiet 2>&1 & "
                           "pid=$!; sleep 1.5; kill -TERM $pid; wait $pid";
   auto r = test::run_sedem(cmd);
   EXPECT_EQ(r.status, 130) << r.output;
@@ -224,6 +225,45 @@ TEST(Cli, HelpOfEachCommandNamesItsOptions) {
     EXPECT_EQ(r.status, 0) << cmd;
     EXPECT_NE(r.output.find("Usage"), std::string::npos) << cmd << r.output;
   }
+}
+
+}  // namespace
+}  // namespace sedem
+
+namespace sedem {
+namespace {
+
+TEST(Cli, InterruptedAndResumedRunEqualsAnUninterruptedOne) {
+  const fs::path whole = kOut / "resume_whole", parts = kOut / "resume_parts";
+  fs::remove_all(whole);
+  fs::remove_all(parts);
+  const std::string scene = kDemo +
+                            " --set run.end_time_s=40 --set sample.simulated_count=1500"
+                            " --set output.frames=false --quiet";
+  ASSERT_EQ(test::run_sedem("run " + scene + " --out " + whole.string()).status, 0);
+
+  auto stopped = test::run_sedem("run " + scene + " --out " + parts.string() +
+                                 " 2>&1 & pid=$!; sleep 2; kill -INT $pid; wait $pid");
+  ASSERT_EQ(stopped.status, 130) << "the run ended before it was interrupted: " << stopped.output;
+  EXPECT_NE(stopped.output.find("sedem run --resume " + parts.string()), std::string::npos)
+      << stopped.output;
+  EXPECT_EQ(read_json(parts / "run.json")["status"], "interrupted");
+  ASSERT_TRUE(fs::exists(parts / "checkpoint.bin"));
+
+  auto resumed = test::run_sedem("run --resume " + parts.string() + " --quiet");
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  EXPECT_EQ(read_json(parts / "run.json")["status"], "complete");
+  EXPECT_FALSE(fs::exists(parts / "checkpoint.bin"));
+  // The same readings, series and final particle state, to the bit.
+  for (const char* file : {"readings_buoyancy.csv", "readings_pipette.csv", "granulometry.csv",
+                           "particles.pvd", "fields.pvd"})
+    EXPECT_EQ(text_of(parts / file), text_of(whole / file)) << file;
+  const auto last = render::read_pvd(whole / "particles.pvd").back().second;
+  EXPECT_EQ(text_of(parts / last), text_of(whole / last)) << last;
+
+  auto again = test::run_sedem("run --resume " + parts.string());
+  EXPECT_EQ(again.status, 0);
+  EXPECT_NE(again.output.find("nothing to resume"), std::string::npos) << again.output;
 }
 
 }  // namespace
