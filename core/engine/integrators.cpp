@@ -51,7 +51,7 @@ struct ThreadSums {
 void check(const EngineState& s, std::size_t i, double runaway, Blowup& b) {
   if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) b.note(s.origin[i], "position", s.x[i]);
   if (!std::isfinite(s.vx[i]) || !std::isfinite(s.vy[i])) b.note(s.origin[i], "velocity", s.vx[i]);
-  const double speed = std::hypot(s.vx[i], s.vy[i]);
+  const double speed = std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]);
   if (speed > runaway) b.note(s.origin[i], "speed", speed);
   if (!std::isfinite(s.omega[i])) b.note(s.origin[i], "angular velocity", s.omega[i]);
 }
@@ -104,7 +104,7 @@ class ReferenceIntegrator final : public Integrator {
           if (s.frozen[i]) return;
           const double d = s.diameter[i];
           const double mass = m.mass(d);
-          const double speed = std::hypot(s.vx[i], s.vy[i]);
+          const double speed = std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]);
           const double c = ctx_.drag.coefficient(d, speed, s.x[i], s.y[i]);
           const double ax = (f.fx[i] - c * s.vx[i]) / mass, ay = (f.fy[i] - c * s.vy[i]) / mass;
           s.vx[i] += dt * ax;
@@ -115,10 +115,10 @@ class ReferenceIntegrator final : public Integrator {
           if (f.stiffness[i] == 0) {
             const double ut = stokes::terminal_velocity(
                 d, m.particle_density, Fluid{m.fluid_density, m.viscosity, m.gravity});
-            t.max_change = std::max(t.max_change, dt * std::hypot(ax, ay) / ut);
+            t.max_change = std::max(t.max_change, dt * std::sqrt(ax * ax + ay * ay) / ut);
             t.max_rate = std::max(t.max_rate, c / mass);
           }
-          t.max_speed = std::max(t.max_speed, std::hypot(s.vx[i], s.vy[i]));
+          t.max_speed = std::max(t.max_speed, std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]));
           check(s, i, ctx_.runaway_speed, t.blowup);
         });
     if (sums.blowup.found && !blowup.found) blowup = sums.blowup;
@@ -190,8 +190,8 @@ class ExponentialIntegrator final : public Integrator {
           const double d = s.diameter[i];
           const double mass = m.mass(d);
           const double vx = s.vx[i], vy = s.vy[i];
-          const double c =
-              ctx_.drag.coefficient(d, std::hypot(vx, vy), s.x[i], s.y[i]) + f.stiffness[i] * dt;
+          const double c = ctx_.drag.coefficient(d, std::sqrt(vx * vx + vy * vy), s.x[i], s.y[i]) +
+                           f.stiffness[i] * dt;
           if (c > 0) {
             const double rate = c / mass;
             const double decay = std::exp(-dt * rate);
