@@ -21,7 +21,7 @@ double DragEvaluator::coefficient(double d, double speed, double x, double y) co
       return 3.0 * std::numbers::pi * model->viscosity * d;
     case DragLaw::di_felice: {
       // drag::di_felice_coefficient with the cell's ln(eps) reused: eps^(2 - chi) as one exp.
-      // Tested against it in tests/engine.
+      // The engine's terminal velocities are tested against drag::di_felice_terminal_velocity.
       const double eps = voidage->at(x, y), log_eps = voidage->log_at(x, y);
       const double mu = model->viscosity;
       const double re = model->fluid_density * eps * speed * d / mu;
