@@ -194,9 +194,11 @@ class ExponentialIntegrator final : public Integrator {
                            f.stiffness[i] * dt;
           if (c > 0) {
             const double rate = c / mass;
-            const double decay = std::exp(-dt * rate);
-            const double relax = -std::expm1(-dt * rate) / rate;  // integral of the decay over dt
-            const double ux = f.fx[i] / c, uy = f.fy[i] / c;      // velocity the step tends to
+            // decay - 1 from one call; past 40 response times it is -1 to round-off.
+            const double lost = dt * rate > 40 ? -1.0 : std::expm1(-dt * rate);
+            const double decay = 1.0 + lost;
+            const double relax = -lost / rate;                // integral of the decay over dt
+            const double ux = f.fx[i] / c, uy = f.fy[i] / c;  // velocity the step tends to
             s.x[i] += ux * dt + (vx - ux) * relax;
             s.y[i] += uy * dt + (vy - uy) * relax;
             s.vx[i] = ux + (vx - ux) * decay;
