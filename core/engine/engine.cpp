@@ -97,7 +97,7 @@ constexpr char kMagic[8] = {'S', 'E', 'D', 'E', 'M', 'C', 'K', '1'};
 }  // namespace
 
 // The margin of the candidate lists, in radii.
-constexpr double kListMargin = 1.0;
+constexpr double kListMargin = 2.0;
 
 namespace {}  // namespace
 
@@ -106,7 +106,7 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
   const std::size_t n = p.size();
   threads_ = scene_.integrator.threads > 0 ? int(scene_.integrator.threads) : omp_get_max_threads();
   // Below a few thousand particles a step takes microseconds and forking threads costs more.
-  if (n < 4096) threads_ = 1;
+  if (n < 2048) threads_ = 1;
   model_ = force_model(scene_, sample_.particle_density);
   if (scene_.integrator.method == "reference") model_.skin = 0.25;
 

@@ -3,8 +3,8 @@
 // The DEM engine: Eq. 5 for every particle, forces of Sect. 3 and 4.2 (see forces.h), the
 // integrators of Sect. 4.6 (see integrators.h), neighbour search in neighbour_grid.h.
 // One step: voidage grid (Di Felice only) -> neighbour grid -> force pass -> integrator;
-// Candidate lists (Verlet) are rebuilt from the grid when a particle has moved more than a
-// half its radius since the last build (the search radii carry a margin of one radius); at most
+// Candidate lists (Verlet) are rebuilt from the grid when a particle has moved more than its
+// radius since the last build (the search radii carry a margin of two radii); at most
 // every 16 steps the rebuild first re-sorts the state in grid order. Every 64 steps resting
 // particles below the lowest instrument are frozen. A blow-up throws InstabilityError.
 

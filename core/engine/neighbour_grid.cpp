@@ -38,7 +38,7 @@ void NeighbourGrid::build(std::size_t n, const double* x, const double* y, const
     start_.assign(buckets + 1, 0);
   }
   std::fill(level_max_radius_.begin(), level_max_radius_.end(), -1.0);
-#pragma omp parallel for schedule(static) if (n > 4096)
+#pragma omp parallel for schedule(static) if (n >= 2048)
   for (std::size_t i = 0; i < n; ++i) {
     int l = 0;
     while (l + 1 < levels_ && cell_[l] < 2 * radius[i]) ++l;

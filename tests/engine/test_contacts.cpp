@@ -38,6 +38,27 @@ TEST(EngineContact, GrainRestsOnTheBottom) {
   }
 }
 
+// A grain at rest on the bottom, below every instrument, is frozen: it stops costing steps
+// and stays where the force balance put it. One still settling high up is not.
+TEST(EngineContact, RestingGrainBelowTheInstrumentsIsFrozen) {
+  Scene scene = scene_with("stokes", "exponential");
+  scene.integrator.freeze_settled = true;
+  const double d = 50e-6;
+  Engine engine(scene, sample_of({{0, 0.5 * d + 2e-6, d}, {0.01, 0.4, d}}));
+  EXPECT_GT(engine.freeze_height(), 0.1);
+  EXPECT_LT(engine.freeze_height(), 0.4);
+  engine.advance_to(1.0);
+  EXPECT_EQ(engine.stats().frozen, 1u);
+  const double y = engine.particles().y[0];
+  const double before = engine.stats().particle_steps;
+  const auto steps = engine.stats().steps;
+  engine.advance_to(2.0);
+  EXPECT_EQ(engine.particles().y[0], y);
+  EXPECT_EQ(engine.stats().particle_steps - before, double(engine.stats().steps - steps));
+  EXPECT_NEAR(0.5 * d - y, net_weight(d) / scene.forces.stiffness_normal,
+              1e-3 * net_weight(d) / 1e3);
+}
+
 // Two equal grains meet head on at +-v0 with no fluid: a linear spring of K_N between masses
 // m, reduced mass m/2: the largest overlap is 2 v0 sqrt(m / (2 K_N)), the contact lasts
 // pi sqrt(m / (2 K_N)), and they leave with their velocities reversed (restitution 1).
