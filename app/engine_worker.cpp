@@ -1,45 +1,48 @@
 #include "app/engine_worker.h"
 
-#include <algorithm>
 #include <chrono>
-#include <exception>
 
 namespace sedem::app {
 
 EngineWorker::EngineWorker(Engine& engine, std::vector<double> schedule, int capacity)
-    : engine_(engine), schedule_(std::move(schedule)), slots_(capacity) {}
+    : runner_(engine, std::move(schedule), std::size_t(capacity)), slots_(capacity) {}
+
+// Waits for room on the main thread, which makes room until it aborts.
+bool EngineWorker::hand_over(Snapshot snapshot) {
+  while (!slots_.tryAcquire(1, 100))
+    if (abort_.load()) return false;
+  emit snapshotReady(std::make_shared<const Snapshot>(std::move(snapshot)));
+  return true;
+}
 
 void EngineWorker::start() {
-  using clock = std::chrono::steady_clock;
-  try {
-    auto last_report = clock::now();
-    for (double target : schedule_) {
-      if (target < engine_.time()) continue;  // a resumed run starts past these
-      // The engine chooses its steps; only the output times cut them, so a run stopped and
-      // resumed between two outputs takes the very same steps as one that never stopped.
-      while (engine_.time() < target) {
-        if (stop_.load()) {
-          emit finished(false);
-          return;
-        }
-        engine_.step(target);
-        if (clock::now() - last_report > std::chrono::milliseconds(500)) {
-          emit progress(engine_.time(), engine_.stats().particle_steps);
-          last_report = clock::now();
-        }
-      }
-      // Wait for room in the queue, but keep listening for stop().
-      while (!slots_.tryAcquire(1, 100))
-        if (stop_.load()) {
-          emit finished(false);
-          return;
-        }
-      emit snapshotReady(std::make_shared<const Snapshot>(engine_.snapshot()));
-      emit progress(engine_.time(), engine_.stats().particle_steps);
-    }
-    emit finished(true);
-  } catch (const std::exception& e) {
-    emit failed(QString::fromStdString(e.what()));
+  using namespace std::chrono_literals;
+  runner_.start();
+  auto report = [&] {
+    const auto p = runner_.progress();
+    emit progress(p.time, p.particle_steps);
+  };
+  while (!runner_.ended()) {
+    if (stop_.load()) break;
+    auto snapshot = runner_.next(200ms);
+    report();
+    if (!snapshot) continue;
+    if (!hand_over(std::move(*snapshot))) break;
+  }
+  runner_.stop();  // joins the engine's thread: the engine rests between two steps
+  // Snapshots computed before the stop are results: hand them over too.
+  while (auto snapshot = runner_.next(0ms))
+    if (!hand_over(std::move(*snapshot))) break;
+  report();
+  switch (runner_.state()) {
+    case EngineRunner::State::failed:
+      emit failed(QString::fromStdString(runner_.error()));
+      break;
+    case EngineRunner::State::finished:
+      emit finished(!stop_.load());
+      break;
+    default:
+      emit finished(false);
   }
 }
 

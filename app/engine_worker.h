@@ -8,21 +8,28 @@
 #include <vector>
 
 #include "core/engine/engine.h"
+#include "core/engine/runner.h"
 
 Q_DECLARE_METATYPE(std::shared_ptr<const sedem::Snapshot>)
 
 namespace sedem::app {
 
-// Runs the engine on a worker thread. At each scheduled time it hands an immutable snapshot
-// to the main thread through a queued signal; at most `capacity` snapshots may wait there,
-// so a slow observer slows the engine instead of filling memory, and the engine never waits
-// on anything else. stop() is honoured within one slice of simulated time.
+// The Qt side of the engine's thread (core's EngineRunner): on a QThread of its own it takes
+// the runner's snapshots and hands them to the main thread by queued signals, with progress
+// in between. At most `capacity` snapshots wait in the runner and `capacity` more on the main
+// thread, so a slow observer slows the engine instead of filling memory; the engine never
+// waits on anything else. stop() ends the run at the next step.
 class EngineWorker : public QObject {
   Q_OBJECT
  public:
-  EngineWorker(Engine& engine, std::vector<double> schedule, int capacity = 4);
+  EngineWorker(Engine& engine, std::vector<double> schedule, int capacity = 2);
 
   void stop() { stop_.store(true); }
+  // The main thread takes no more snapshots (it is leaving): stop and hand nothing over.
+  void abort() {
+    abort_.store(true);
+    stop();
+  }
   // The main thread calls this when it has finished with a snapshot.
   void release() { slots_.release(); }
 
@@ -37,10 +44,10 @@ class EngineWorker : public QObject {
   void finished(bool completed);
 
  private:
-  Engine& engine_;
-  std::vector<double> schedule_;
+  EngineRunner runner_;
   QSemaphore slots_;
-  std::atomic<bool> stop_{false};
+  std::atomic<bool> stop_{false}, abort_{false};
+  bool hand_over(Snapshot snapshot);
 };
 
 }  // namespace sedem::app

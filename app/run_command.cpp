@@ -33,12 +33,13 @@ struct Failure {
   std::string message;
 };
 
+// Every time an observer wants, from `from` (a resumed run's start) to the end.
 std::vector<double> schedule_of(const std::vector<std::unique_ptr<Observer>>& observers,
-                                double end_time) {
+                                double end_time, double from) {
   std::vector<std::vector<double>> lists{{end_time}};
   for (const auto& o : observers) lists.push_back(o->wanted_times());
   std::vector<double> merged = merge_times(lists);
-  std::erase_if(merged, [&](double t) { return t > end_time * (1 + 1e-12); });
+  std::erase_if(merged, [&](double t) { return t > end_time * (1 + 1e-12) || t < from; });
   return merged;
 }
 
@@ -138,7 +139,7 @@ int run(const RunOptions& options) {
   }
 
   auto& observers = run_observers.all;
-  EngineWorker worker(engine, schedule_of(observers, scene.end_time));
+  EngineWorker worker(engine, schedule_of(observers, scene.end_time, engine.time()));
   QThread thread;
   worker.moveToThread(&thread);
   Progress progress(scene.end_time, options.quiet);
@@ -178,7 +179,7 @@ int run(const RunOptions& options) {
   stop_poll.start(100);
   thread.start();
   qt.exec();
-  worker.stop();
+  worker.abort();
   thread.quit();
   thread.wait();
   progress.done();

@@ -39,6 +39,8 @@ void EngineRunner::run() {
           if (!wait_if_paused(lock)) break;
         }
         engine_.step(t);
+        progress_time_.store(engine_.time());
+        progress_steps_.store(engine_.stats().particle_steps);
       }
       std::unique_lock lock(mutex_);
       if (stop_requested_) break;
@@ -100,6 +102,22 @@ std::optional<Snapshot> EngineRunner::next() {
   queue_.pop_front();
   changed_.notify_all();
   return s;
+}
+
+std::optional<Snapshot> EngineRunner::next(std::chrono::milliseconds timeout) {
+  std::unique_lock lock(mutex_);
+  changed_.wait_for(lock, timeout,
+                    [&] { return !queue_.empty() || done_ || state_ == State::idle; });
+  if (queue_.empty()) return std::nullopt;
+  Snapshot s = std::move(queue_.front());
+  queue_.pop_front();
+  changed_.notify_all();
+  return s;
+}
+
+bool EngineRunner::ended() const {
+  std::lock_guard lock(mutex_);
+  return done_ && queue_.empty();
 }
 
 void EngineRunner::checkpoint(const std::string& path) {

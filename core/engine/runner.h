@@ -7,6 +7,8 @@
 // at the next step boundary. An exception in the engine (InstabilityError) ends the run and
 // is reported by error().
 
+#include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
@@ -38,6 +40,18 @@ class EngineRunner {
   // The next snapshot in time order; blocks; nullopt once the run has ended and the queue
   // is drained.
   std::optional<Snapshot> next();
+  // The same, waiting at most `timeout`: nullopt also when none came in time (then ended()
+  // tells the two apart).
+  std::optional<Snapshot> next(std::chrono::milliseconds timeout);
+  // The run has ended and every snapshot has been taken.
+  bool ended() const;
+
+  // Where the engine is, readable from any thread while it runs.
+  struct Progress {
+    double time = 0;
+    double particle_steps = 0;
+  };
+  Progress progress() const { return {progress_time_.load(), progress_steps_.load()}; }
   // Saves the engine's state; only while paused or after the run has ended.
   void checkpoint(const std::string& path);
 
@@ -58,6 +72,7 @@ class EngineRunner {
   bool pause_requested_ = false, stop_requested_ = false, resting_ = false, done_ = false;
   std::string error_;
   std::thread thread_;
+  std::atomic<double> progress_time_{0}, progress_steps_{0};
 };
 
 }  // namespace sedem
