@@ -3,6 +3,7 @@
 #include <QGuiApplication>
 
 #include "app/batch_command.h"
+#include "app/bench_command.h"
 #include "app/exit_codes.h"
 #include "app/qt_platform.h"
 #include "app/reduce_command.h"
@@ -73,6 +74,16 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
 
+  BenchOptions bench_options;
+  auto* bench_cmd = cli.add_subcommand(
+      "bench",
+      "Run a benchmark: engine (throughput, memory, stability) or accuracy (run time "
+      "against error for every sample); arguments after -- go to it");
+  bench_cmd->add_option("which", bench_options.which, "engine or accuracy")
+      ->check(CLI::IsMember({"engine", "accuracy"}))
+      ->capture_default_str();
+  bench_cmd->add_option("args", bench_options.args, "Arguments for the benchmark (after --)");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -80,6 +91,7 @@ int main(int argc, char** argv) {
     return code == 0 ? exit_code::ok : exit_code::usage;
   }
 
+  if (bench_cmd->parsed()) return bench(bench_options);
   use_offscreen_platform();
   QGuiApplication qt(argc, argv);
   if (run_cmd->parsed()) return run(run_options);

@@ -220,7 +220,7 @@ TEST(Cli, ReduceRejectsANegativeTimeNamingTheRow) {
 }
 
 TEST(Cli, HelpOfEachCommandNamesItsOptions) {
-  for (const char* cmd : {"run", "batch", "render", "reduce"}) {
+  for (const char* cmd : {"run", "batch", "render", "reduce", "bench"}) {
     auto r = test::run_sedem(std::string(cmd) + " --help");
     EXPECT_EQ(r.status, 0) << cmd;
     EXPECT_NE(r.output.find("Usage"), std::string::npos) << cmd << r.output;
@@ -264,6 +264,32 @@ TEST(Cli, InterruptedAndResumedRunEqualsAnUninterruptedOne) {
   auto again = test::run_sedem("run --resume " + parts.string());
   EXPECT_EQ(again.status, 0);
   EXPECT_NE(again.output.find("nothing to resume"), std::string::npos) << again.output;
+}
+
+}  // namespace
+}  // namespace sedem
+
+namespace sedem {
+namespace {
+
+TEST(Cli, BenchRunsTheAccuracyBenchmarkAndWritesItsCsv) {
+  const fs::path out = kOut / "bench";
+  fs::remove_all(out);
+  auto r = test::run_sedem("bench accuracy -- --scenes " + kDemo +
+                           " --vary sample.simulated_count=300 --set run.end_time_s=60 --out " +
+                           out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string csv = text_of(out / "bench_accuracy.csv");
+  EXPECT_EQ(
+      csv.rfind("sample,test,variant,particles,wall_s,particle_steps_per_s,error_pp,bias_pp", 0),
+      0u)
+      << csv;
+  for (const char* test : {"hydrometer", "buoyancy", "pipette"})
+    EXPECT_NE(csv.find(std::string("demo,") + test + ",\"sample.simulated_count=300\""),
+              std::string::npos)
+        << test << "\n"
+        << csv;
+  EXPECT_TRUE(fs::exists(out / "bench_accuracy_pipette.png"));
 }
 
 }  // namespace
