@@ -1,5 +1,7 @@
 #include "render/mass_bands.h"
 
+#include "core/fields/layer_fields.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -225,18 +227,7 @@ std::vector<double> band_fractions_from_layers(const std::vector<double>& layer_
 
 std::vector<double> band_fractions_from_particles(const Particles& p, double height, int bands) {
   if (bands < 1) throw std::invalid_argument("bands must be at least 1");
-  std::vector<double> mass(std::size_t(bands), 0.0);
-  double total = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double depth = height - p.y[i];
-    const int k = std::clamp(int(std::floor(depth / height * bands)), 0, bands - 1);
-    const double m = p.weight[i] * p.diameter[i] * p.diameter[i] * p.diameter[i];
-    mass[std::size_t(k)] += m;
-    total += m;
-  }
-  if (total > 0)
-    for (auto& m : mass) m /= total;
-  return mass;
+  return band_fractions_from_layers(layer_solid_volume(p, height, std::size_t(bands)), 1);
 }
 
 }  // namespace sedem::render

@@ -109,27 +109,6 @@ Figure fig12_largest_diameter(const LargestDiameterInput& in) {
   return f;
 }
 
-DiameterProfile largest_diameter_profile(const Snapshot& snapshot, double column_height_m,
-                                         int points) {
-  const auto& p = snapshot.particles;
-  std::vector<std::pair<double, double>> by_depth(p.size());  // (depth, diameter)
-  for (std::size_t i = 0; i < p.size(); ++i)
-    by_depth[i] = {column_height_m - p.y[i], p.diameter[i]};
-  std::sort(by_depth.begin(), by_depth.end());
-  DiameterProfile profile;
-  profile.time_s = snapshot.time;
-  double largest = 0;
-  std::size_t next = 0;
-  for (int k = 1; k <= points; ++k) {
-    const double depth = column_height_m * k / points;
-    for (; next < by_depth.size() && by_depth[next].first <= depth; ++next)
-      largest = std::max(largest, by_depth[next].second);
-    profile.depth_m.push_back(depth);
-    profile.largest_diameter_m.push_back(largest);
-  }
-  return profile;
-}
-
 Figure fig13_bulb_density(const std::vector<SampleBulbDensity>& samples) {
   std::vector<Plot> panels;
   for (const auto& s : samples) {

@@ -34,11 +34,6 @@ struct LargestDiameterInput {
 };
 Figure fig12_largest_diameter(const LargestDiameterInput& input);
 
-// A Fig. 12 profile from the particles: at `points` depths evenly spaced down to the bottom,
-// the largest diameter of the particles above that depth (0 where there are none).
-DiameterProfile largest_diameter_profile(const Snapshot& snapshot, double column_height_m,
-                                         int points = 200);
-
 // Fig. 13: suspension density along the hydrometer's bulb, one panel per sample, one curve
 // per time.
 struct BulbDensityProfile {

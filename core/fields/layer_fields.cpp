@@ -81,17 +81,22 @@ double LayerFields::mean_density(double a, double b) const {
   return density_integral(a, b, 1.0) / (b - a);
 }
 
+std::vector<double> layer_solid_volume(const Particles& particles, double height,
+                                       std::size_t layers) {
+  if (layers == 0) throw std::invalid_argument("layer_solid_volume: zero layers");
+  std::vector<double> volume(layers, 0.0);
+  const double thickness = height / static_cast<double>(layers);
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const double v = grain_volume(particles.diameter[i]) * particles.weight[i];
+    volume[clamp_index(height - particles.y[i], thickness, layers)] += v;
+  }
+  return volume;
+}
+
 LayerFields compute_layer_fields(const Particles& particles, const Cylinder& cylinder,
                                  const Fluid& fluid, double particle_density, std::size_t layers) {
-  if (layers == 0) throw std::invalid_argument("compute_layer_fields: zero layers");
-  std::vector<double> volume(layers, 0.0);
-  const double thickness = cylinder.height / static_cast<double>(layers);
-  for (std::size_t i = 0; i < particles.size(); ++i) {
-    const double d = particles.diameter[i];
-    const double v = std::numbers::pi / 6.0 * d * d * d * particles.weight[i];
-    volume[clamp_index(cylinder.depth_of(particles.y[i]), thickness, layers)] += v;
-  }
-  return LayerFields(std::move(volume), cylinder, fluid, particle_density);
+  return LayerFields(layer_solid_volume(particles, cylinder.height, layers), cylinder, fluid,
+                     particle_density);
 }
 
 ConcentrationGrid concentration_grid(const Particles& particles, const Cylinder& cylinder,

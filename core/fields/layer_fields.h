@@ -60,6 +60,12 @@ class LayerFields {
   std::vector<double> moments_[3];
 };
 
+// The real grains' volume in each of `layers` layers of a column `height` high, top layer
+// first: each simulated particle puts the volume of its `weight` grains in the layer its
+// centre is in.
+std::vector<double> layer_solid_volume(const Particles& particles, double height,
+                                       std::size_t layers);
+
 // Eq. 20 from the weighted particles, O(N + n_ly). Each simulated particle puts the volume
 // of its `weight` real grains in the layer its centre is in (see docs/instruments.md).
 LayerFields compute_layer_fields(const Particles& particles, const Cylinder& cylinder,

@@ -79,21 +79,6 @@ TEST(PaperFigures, Fig12Eq16CurveIsTheLimitingDiameter) {
   expect_matches(f, "fig12.png");
 }
 
-TEST(PaperFigures, LargestDiameterProfileFromParticles) {
-  Snapshot snap;
-  snap.time = 60;
-  snap.particles.resize(3);
-  snap.particles.y = {0.9, 0.5, 0.05};  // depths 0.1, 0.5, 0.95 in a 1 m column
-  snap.particles.diameter = {10e-6, 30e-6, 20e-6};
-  const auto p = render::largest_diameter_profile(snap, 1.0, 10);
-  ASSERT_EQ(p.depth_m.size(), 10u);
-  EXPECT_DOUBLE_EQ(p.time_s, 60.0);
-  EXPECT_DOUBLE_EQ(p.largest_diameter_m[0], 10e-6);  // down to 0.1 m
-  EXPECT_DOUBLE_EQ(p.largest_diameter_m[3], 10e-6);  // 0.4 m
-  EXPECT_DOUBLE_EQ(p.largest_diameter_m[4], 30e-6);  // 0.5 m
-  EXPECT_DOUBLE_EQ(p.largest_diameter_m[9], 30e-6);  // the bottom
-}
-
 TEST(PaperFigures, Fig13BulbDensity) {
   std::vector<render::SampleBulbDensity> in;
   for (int k = 1; k <= 2; ++k) {
