@@ -95,19 +95,16 @@ void EngineRunner::stop() {
 }
 
 std::optional<Snapshot> EngineRunner::next() {
-  std::unique_lock lock(mutex_);
-  changed_.wait(lock, [&] { return !queue_.empty() || done_ || state_ == State::idle; });
-  if (queue_.empty()) return std::nullopt;
-  Snapshot s = std::move(queue_.front());
-  queue_.pop_front();
-  changed_.notify_all();
-  return s;
+  return next(std::chrono::milliseconds::max());
 }
 
 std::optional<Snapshot> EngineRunner::next(std::chrono::milliseconds timeout) {
   std::unique_lock lock(mutex_);
-  changed_.wait_for(lock, timeout,
-                    [&] { return !queue_.empty() || done_ || state_ == State::idle; });
+  const auto ready = [&] { return !queue_.empty() || done_ || state_ == State::idle; };
+  if (timeout == std::chrono::milliseconds::max())
+    changed_.wait(lock, ready);
+  else
+    changed_.wait_for(lock, timeout, ready);
   if (queue_.empty()) return std::nullopt;
   Snapshot s = std::move(queue_.front());
   queue_.pop_front();
