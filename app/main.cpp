@@ -1,4 +1,5 @@
 // sedem: the command line. Parsing and wiring only; the work is in core/ and render/.
+#include <vtkObject.h>
 #include <CLI/CLI.hpp>
 #include <QGuiApplication>
 
@@ -92,6 +93,9 @@ int main(int argc, char** argv) {
   }
 
   if (bench_cmd->parsed()) return bench(bench_options);
+  // VTK's own error printing is off: every failure that matters reaches the user as an
+  // exception with the file and the reason.
+  vtkObject::GlobalWarningDisplayOff();
   use_offscreen_platform();
   QGuiApplication qt(argc, argv);
   if (run_cmd->parsed()) return run(run_options);

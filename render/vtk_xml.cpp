@@ -4,6 +4,7 @@
 #include <string>
 
 #include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkPolyData.h>
@@ -31,9 +32,11 @@ void write_vtk_xml(vtkDataObject* data, const std::filesystem::path& file) {
   writer->EncodeAppendedDataOff();  // raw bytes, not base64
   writer->SetCompressorTypeToZLib();
   writer->SetHeaderTypeToUInt64();
-  if (writer->Write() != 1) {
+  // A full disk shows in the error code, not always in Write()'s return value.
+  if (writer->Write() != 1 || writer->GetErrorCode() != vtkErrorCode::NoError) {
+    const std::string why = vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode());
     std::filesystem::remove(tmp);
-    throw std::runtime_error("cannot write " + file.string());
+    throw std::runtime_error("cannot write " + file.string() + " (" + why + ")");
   }
   std::filesystem::rename(tmp, file);
 }

@@ -294,3 +294,37 @@ TEST(Cli, BenchRunsTheAccuracyBenchmarkAndWritesItsCsv) {
 
 }  // namespace
 }  // namespace sedem
+
+namespace sedem {
+namespace {
+
+TEST(Cli, AnEngineBlowUpIsReportedWithParticleAndTime) {
+  const fs::path out = kOut / "blowup";
+  fs::remove_all(out);
+  // An explicit step a thousand times too long: the engine must say so, not write NaNs.
+  auto r = test::run_sedem("run " + kDemo + " --out " + out.string() +
+                           " --set integrator.method=reference --set integrator.step_factor=1000"
+                           " --set integrator.adaptive=false --set sample.simulated_count=200"
+                           " --set output.frames=false --quiet");
+  EXPECT_EQ(r.status, 5) << r.output;
+  EXPECT_NE(r.output.find("the engine failed: instability: particle"), std::string::npos)
+      << r.output;
+  auto run = read_json(out / "run.json");
+  EXPECT_EQ(run["status"], "failed");
+}
+
+TEST(Cli, AFullDiskStopsTheRunWithAClearMessage) {
+  const fs::path out = kOut / "full";
+  fs::remove_all(out);
+  // A 64 KiB file-size limit stands for a full disk: writes fail with an error (EFBIG).
+  auto r = test::run_sedem(
+      "--version > /dev/null; ( trap '' XFSZ; ulimit -f 64; exec " SEDEM_EXE " run " + kDemo +
+      " --out " + out.string() + " --set output.frames=false --quiet )");
+  EXPECT_EQ(r.status, 4) << r.output;
+  EXPECT_NE(r.output.find("writing the outputs failed: cannot write"), std::string::npos)
+      << r.output;
+  EXPECT_EQ(read_json(out / "run.json")["status"], "failed");
+}
+
+}  // namespace
+}  // namespace sedem
