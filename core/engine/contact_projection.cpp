@@ -100,9 +100,9 @@ std::size_t ContactProjection::sweep(const EngineState& s, const NeighbourGrid& 
       std::uint32_t count = 0;
       if (!frozen[i]) {
         const double left = -hw - (x[i] - ri), right = x[i] + ri - hw, bottom = ri - y[i];
-        if (warm) {
-          side_force_[i] = warm_.find(PairHistory::key(origin[i], kWall));
-          floor_force_[i] = warm_.find(PairHistory::key(origin[i], kFloor));
+        if (starting) {
+          side_force_[i] = warm ? warm_.find(PairHistory::key(origin[i], kWall)) : 0.0;
+          floor_force_[i] = warm ? warm_.find(PairHistory::key(origin[i], kFloor)) : 0.0;
         }
         const double side = std::max(left, right);
         if (side > 0 || side_force_[i] > 0) {
@@ -132,7 +132,8 @@ std::size_t ContactProjection::sweep(const EngineState& s, const NeighbourGrid& 
         const double dx = x[j] - x[i], dy = y[j] - y[i];
         const double dist2 = dx * dx + dy * dy;
         const double reach = ri + 0.5 * d[j];
-        if (warm) pair_force_[c] = warm_.find(PairHistory::key(origin[i], origin[j]));
+        if (starting)
+          pair_force_[c] = warm ? warm_.find(PairHistory::key(origin[i], origin[j])) : 0.0;
         if ((dist2 >= reach * reach && pair_force_[c] == 0) || dist2 == 0) continue;
         ++count;
         const bool cross = grid.level(j) != own;
@@ -184,9 +185,13 @@ std::size_t ContactProjection::run(EngineState& s, const NeighbourGrid& grid, co
                                    const std::vector<double>& mobility,
                                    const std::vector<double>& response) {
   const std::size_t n = s.size();
-  for (auto* v : {&dx_, &dy_, &side_force_, &floor_force_, &moved_x_, &moved_y_}) v->assign(n, 0.0);
-  pair_force_.assign(pass.list().size(), 0.0);
-  count_.assign(n, 0);
+  dx_.resize(n);
+  dy_.resize(n);
+  // No zeroing: the first pass sets every force it later reads, and the counts.
+  side_force_.resize(n);
+  floor_force_.resize(n);
+  pair_force_.resize(pass.list().size());
+  count_.resize(n);
   next_count_.resize(n);
   // A first pass counts each particle's contacts at the free positions.
   const std::size_t touching = sweep(s, grid, pass, mobility, Mode::start);
@@ -194,6 +199,8 @@ std::size_t ContactProjection::run(EngineState& s, const NeighbourGrid& grid, co
     if (warm_.size() > 0) warm_.assign(nullptr, 0);
     return 0;
   }
+  moved_x_.assign(n, 0.0);
+  moved_y_.assign(n, 0.0);
   double* x = s.x.data();
   double* y = s.y.data();
   auto move = [&] {

@@ -170,10 +170,10 @@ TEST(EngineContact, PairForcesSumToZero) {
     }
     EXPECT_GT(scale, 0) << method;
     EXPECT_GT(engine.stats().max_overlap_ratio, 0.0) << method;
-    // The reference applies the pair forces as they are: exact to round-off. The exponential
-    // integrator's implicit contact damping (k dt per particle, see integrators.h) differs
-    // between partners and leaks momentum in proportion to k dt^2 / m (~1e-7 here).
-    const double tolerance = std::string(method) == "reference" ? 1e-12 : 1e-5;
+    // The reference applies the pair forces as they are; the exponential integrator's
+    // projection gives both partners of a pair the same force change, and each particle's
+    // velocity change is its displacement times m / (force dt): both exact to round-off.
+    const double tolerance = 1e-12;
     EXPECT_LT(std::abs(px), tolerance * scale) << method;
     EXPECT_LT(std::abs(py), tolerance * scale) << method;
   }
