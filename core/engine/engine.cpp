@@ -108,7 +108,10 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
   // Below a few thousand particles a step takes microseconds and forking threads costs more.
   if (n < 2048) threads_ = 1;
   model_ = force_model(scene_, sample_.particle_density);
-  if (scene_.integrator.method == "reference") model_.skin = 0.25;
+  if (scene_.integrator.method == "reference")
+    model_.skin = 0.25;
+  else
+    model_.contact_forces = false;  // the exponential integrator projects contacts
 
   state_.resize(n);
   forces_.resize(n);
@@ -152,6 +155,8 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
       std::max(10.0, 1e4 * stokes::terminal_velocity(dmax, model_.particle_density, fluid));
   ctx.min_radius = 0.5 * dmin;
   ctx.max_terminal_speed = stokes::terminal_velocity(dmax, model_.particle_density, fluid) / 0.96;
+  ctx.grid = &grid_;
+  ctx.pass = &pass_;
   integrator_ = make_integrator(scene_.integrator, ctx);
   freeze_height_ =
       scene_.integrator.freeze_settled && model_.contact ? lowest_measured_height(scene_) : 0.0;
@@ -312,10 +317,11 @@ std::size_t Engine::bytes() const {
   b += cap(state_.x) + cap(state_.y) + cap(state_.vx) + cap(state_.vy) + cap(state_.omega) +
        cap(state_.diameter) + cap(state_.weight) + cap(state_.origin) + cap(state_.frozen);
   b += cap(forces_.fx) + cap(forces_.fy) + cap(forces_.torque) + cap(forces_.stiffness) +
-       cap(forces_.spin_stiffness);
+       cap(forces_.spin_stiffness) + cap(forces_.lubrication_stiffness);
   b +=
       cap(search_) + cap(x0_) + cap(y0_) + cap(scratch_) + cap(scratch_index_) + cap(scratch_flag_);
   b += grid_.bytes() + voidage_.bytes() + pass_.bytes() + springs_.bytes() + next_springs_.bytes();
+  b += integrator_->bytes();
   return b;
 }
 

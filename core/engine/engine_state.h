@@ -25,13 +25,15 @@ struct EngineState {
 };
 
 // What the force pass leaves for the integrator, per particle (same order as the state).
-// `stiffness` and `spin_stiffness` bound how stiffly the contacts hold the particle; the
-// exponential integrator folds them into an implicit damping (see integrators.h).
+// `stiffness` bounds how stiffly contacts and lubrication hold the particle (non-zero: it
+// touches); `lubrication_stiffness` is the lubrication's share, which the exponential
+// integrator folds into an implicit damping (see integrators.h).
 struct ForceAccumulators {
   std::vector<double> fx, fy, torque;
-  std::vector<double> stiffness, spin_stiffness;
+  std::vector<double> stiffness, spin_stiffness, lubrication_stiffness;
   void resize(std::size_t n) {
-    for (auto* v : {&fx, &fy, &torque, &stiffness, &spin_stiffness}) v->resize(n);
+    for (auto* v : {&fx, &fy, &torque, &stiffness, &spin_stiffness, &lubrication_stiffness})
+      v->resize(n);
   }
 };
 

@@ -90,18 +90,19 @@ void ForcePass::run(const EngineState& s, const NeighbourGrid& grid, const PairH
     for (std::size_t k = 0; k < n; ++k) {
       const std::uint32_t i = order[k];
       const double ri = 0.5 * d[i];
-      double fx = 0, fy = m.gravity_force(d[i]), tq = 0, stiff = 0, spin = 0;
+      double fx = 0, fy = m.gravity_force(d[i]), tq = 0, stiff = 0, spin = 0, lub = 0;
       bool touching = false, close = false;
       double worst = 0;
 
       if (m.contact && !frozen[i]) {
         const double left = -hw - (x[i] - ri), right = x[i] + ri - hw, bottom = ri - y[i];
+        const double kw = m.contact_forces ? m.kn : 0.0;
         if (left > 0)
-          fx += m.kn * left, stiff += m.kn, worst = std::max(worst, left), touching = true;
+          fx += kw * left, stiff += m.kn, worst = std::max(worst, left), touching = true;
         if (right > 0)
-          fx -= m.kn * right, stiff += m.kn, worst = std::max(worst, right), touching = true;
+          fx -= kw * right, stiff += m.kn, worst = std::max(worst, right), touching = true;
         if (bottom > 0)
-          fy += m.kn * bottom, stiff += m.kn, worst = std::max(worst, bottom), touching = true;
+          fy += kw * bottom, stiff += m.kn, worst = std::max(worst, bottom), touching = true;
         if (worst > ri) tf.blowup.note(origin[i], "wall overlap", worst);
         close = std::max(left, std::max(right, bottom)) > -m.skin * ri;
         worst /= ri;
@@ -121,10 +122,16 @@ void ForcePass::run(const EngineState& s, const NeighbourGrid& grid, const PairH
           const double dist = std::sqrt(dist2);
           const double nx = dx / dist, ny = dy / dist;  // from i to j
           const double overlap = ri + rj - dist;
-          double jfx = 0, jfy = 0, jtq = 0, jstiff = 0, jspin = 0;
+          double jfx = 0, jfy = 0, jtq = 0, jstiff = 0, jspin = 0, jlub = 0;
           if (m.contact && overlap > -m.skin * (ri + rj)) close = true;
 
-          if (m.contact && overlap > 0) {
+          if (m.contact && overlap > 0 && !m.contact_forces) {
+            stiff += pair_stiffness;
+            touching = true;
+            worst = std::max(worst, overlap / std::min(ri, rj));
+            if (overlap > 2 * std::min(ri, rj)) tf.blowup.note(origin[i], "overlap", overlap);
+            if (cross) jstiff += pair_stiffness;
+          } else if (m.contact && overlap > 0) {
             const bool i_first = origin[i] < origin[j];
             const std::uint32_t a = i_first ? i : j, b = i_first ? j : i;
             const std::uint64_t key = PairHistory::key(origin[i], origin[j]);
@@ -159,16 +166,18 @@ void ForcePass::run(const EngineState& s, const NeighbourGrid& grid, const PairH
               fx -= f * nx;
               fy -= f * ny;
               stiff += 2 * f * m.lubrication_range / ri;
+              lub += 2 * f * m.lubrication_range / ri;
             }
             if (cross && gap < reach * rj) {
               const double f = lubrication_force(m, d[j], d[i], gap);
               jfx += f * nx;
               jfy += f * ny;
               jstiff += 2 * f * m.lubrication_range / rj;
+              jlub += 2 * f * m.lubrication_range / rj;
             }
           }
           if (cross && !frozen[j] && (jfx != 0 || jfy != 0 || jtq != 0 || jstiff != 0))
-            reactions.push_back({j, jfx, jfy, jtq, jstiff, jspin});
+            reactions.push_back({j, jfx, jfy, jtq, jstiff, jspin, jlub});
         }
       }
 
@@ -177,6 +186,7 @@ void ForcePass::run(const EngineState& s, const NeighbourGrid& grid, const PairH
       out.torque[i] = tq;
       out.stiffness[i] = stiff;
       out.spin_stiffness[i] = spin;
+      out.lubrication_stiffness[i] = lub;
       if (touching) ++tf.contacts;
       if (touching || close) {
         const double mass = m.mass(d[i]);
@@ -196,6 +206,7 @@ void ForcePass::run(const EngineState& s, const NeighbourGrid& grid, const PairH
       if (out.stiffness[r.j] == 0 && r.stiffness > 0) ++facts.contacts;
       out.stiffness[r.j] += r.stiffness;
       out.spin_stiffness[r.j] += r.spin_stiffness;
+      out.lubrication_stiffness[r.j] += r.lubrication_stiffness;
     }
     const ThreadFacts& tf = facts_[std::size_t(t)];
     facts.contacts += tf.contacts;
@@ -205,7 +216,8 @@ void ForcePass::run(const EngineState& s, const NeighbourGrid& grid, const PairH
     facts.max_overlap_ratio = std::max(facts.max_overlap_ratio, tf.max_overlap_ratio);
     if (tf.blowup.found && !facts.blowup.found) facts.blowup = tf.blowup;
   }
-  if (m.friction && m.contact) new_springs.assign(springs_.data(), springs_.size());
+  if (m.friction && m.contact && m.contact_forces)
+    new_springs.assign(springs_.data(), springs_.size());
 }
 
 }  // namespace sedem

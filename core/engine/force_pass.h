@@ -37,11 +37,14 @@ class ForcePass {
   void run(const EngineState& s, const NeighbourGrid& grid, const PairHistory& old_springs,
            PairHistory& new_springs, double dt, ForceAccumulators& out, PassFacts& facts);
   std::size_t bytes() const;
+  // The candidate lists: partners of order()[k] are list()[list_start()[k] .. [k + 1]).
+  const std::vector<std::uint32_t>& list_start() const { return list_start_; }
+  const std::vector<std::uint32_t>& list() const { return list_; }
 
  private:
   struct Reaction {
     std::uint32_t j;
-    double fx, fy, torque, stiffness, spin_stiffness;
+    double fx, fy, torque, stiffness, spin_stiffness, lubrication_stiffness;
   };
   struct ThreadFacts {
     std::size_t contacts = 0;

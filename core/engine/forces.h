@@ -16,6 +16,9 @@ enum class DragLaw { off, stokes, di_felice };
 // Constants of the force laws, taken from the scene once.
 struct ForceModel {
   bool weight = true, buoyancy = true, contact = true, friction = true, lubrication = false;
+  // false: the force pass only detects contacts; the integrator resolves them as constraints
+  // (contact_projection.h) and friction is not represented.
+  bool contact_forces = true;
   DragLaw drag = DragLaw::di_felice;
   double kn = 1e3, kt = 1e3, mu = 0.5;
   double lubrication_intensity = 10, lubrication_range = 10;

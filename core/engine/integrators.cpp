@@ -8,6 +8,7 @@
 #include <ostream>
 #include <vector>
 
+#include "core/engine/contact_projection.h"
 #include "core/physics/drag.h"
 #include "core/physics/stokes.h"
 
@@ -185,58 +186,87 @@ class ExponentialIntegrator final : public Integrator {
     step_ = std::min(config_.max_step, config_.fast_step_factor * ctx_.min_response_time);
     if (ctx_.model->contact && ctx_.max_terminal_speed > 0)
       step_ = std::min(step_, ctx_.min_radius / ctx_.max_terminal_speed);
+    projection_.configure(*ctx_.model, ctx_.threads, ctx_.contact_sweeps);
   }
   const char* name() const override { return "exponential"; }
   double next_step(const PassFacts&) override { return step_; }
 
   void advance(EngineState& s, const ForceAccumulators& f, double dt, Blowup& blowup) override {
     const ForceModel& m = *ctx_.model;
-    const bool spin = m.friction && m.contact;
+    const bool project = m.contact && !m.contact_forces && ctx_.grid && ctx_.pass;
+    if (project) {
+      mobility_.resize(s.size());
+      response_.resize(s.size());
+    }
+    // Free update: the forces of the pass (no contact force when contacts are projected), the
+    // lubrication's stiffness folded into the damping.
+    integrate(ctx_.threads, s.size(), sums_, [&](std::size_t i, ThreadSums&) {
+      if (s.frozen[i]) {
+        if (project) mobility_[i] = response_[i] = 0;
+        return;
+      }
+      const double d = s.diameter[i];
+      const double mass = m.mass(d);
+      const double vx = s.vx[i], vy = s.vy[i];
+      const double c = ctx_.drag.coefficient(d, std::sqrt(vx * vx + vy * vy), s.x[i], s.y[i]) +
+                       f.lubrication_stiffness[i] * dt;
+      if (c > 0) {
+        const double rate = c / mass, a = dt * rate;
+        // decay - 1 from one call; past 40 response times it is -1 to round-off.
+        const double lost = a > 40 ? -1.0 : std::expm1(-a);
+        const double decay = 1.0 + lost;
+        const double relax = -lost / rate;                // integral of the decay over dt
+        const double ux = f.fx[i] / c, uy = f.fy[i] / c;  // velocity the step tends to
+        s.x[i] += ux * dt + (vx - ux) * relax;
+        s.y[i] += uy * dt + (vy - uy) * relax;
+        s.vx[i] = ux + (vx - ux) * decay;
+        s.vy[i] = uy + (vy - uy) * decay;
+        if (project) {
+          // A constant force F over the step moves the particle by F (a + lost) / (rate c)
+          // and changes its velocity by -F lost / c. a + lost = a^2/2 - a^3/6 + ... cancels
+          // for small a: its series there.
+          const double drift = a < 1e-3 ? a * a * (0.5 - a * (1.0 / 6 - a / 24)) : a + lost;
+          mobility_[i] = drift / (rate * c);
+          response_[i] = -lost * rate / drift;
+        }
+      } else {
+        const double ax = f.fx[i] / mass, ay = f.fy[i] / mass;
+        s.x[i] += dt * (vx + 0.5 * dt * ax);
+        s.y[i] += dt * (vy + 0.5 * dt * ay);
+        s.vx[i] += dt * ax;
+        s.vy[i] += dt * ay;
+        if (project) {
+          mobility_[i] = 0.5 * dt * dt / mass;
+          response_[i] = 2.0 / dt;
+        }
+      }
+    });
+    if (project && dt > 0) projection_.run(s, *ctx_.grid, *ctx_.pass, mobility_, response_);
     const ThreadSums sums =
         integrate(ctx_.threads, s.size(), sums_, [&](std::size_t i, ThreadSums& t) {
-          if (s.frozen[i]) return;
-          const double d = s.diameter[i];
-          const double mass = m.mass(d);
-          const double vx = s.vx[i], vy = s.vy[i];
-          const double c = ctx_.drag.coefficient(d, std::sqrt(vx * vx + vy * vy), s.x[i], s.y[i]) +
-                           f.stiffness[i] * dt;
-          if (c > 0) {
-            const double rate = c / mass;
-            // decay - 1 from one call; past 40 response times it is -1 to round-off.
-            const double lost = dt * rate > 40 ? -1.0 : std::expm1(-dt * rate);
-            const double decay = 1.0 + lost;
-            const double relax = -lost / rate;                // integral of the decay over dt
-            const double ux = f.fx[i] / c, uy = f.fy[i] / c;  // velocity the step tends to
-            s.x[i] += ux * dt + (vx - ux) * relax;
-            s.y[i] += uy * dt + (vy - uy) * relax;
-            s.vx[i] = ux + (vx - ux) * decay;
-            s.vy[i] = uy + (vy - uy) * decay;
-          } else {
-            const double ax = f.fx[i] / mass, ay = f.fy[i] / mass;
-            s.x[i] += dt * (vx + 0.5 * dt * ax);
-            s.y[i] += dt * (vy + 0.5 * dt * ay);
-            s.vx[i] += dt * ax;
-            s.vy[i] += dt * ay;
-          }
-          if (spin) {
-            const double inertia = 0.1 * mass * d * d;
-            s.omega[i] = (inertia * s.omega[i] + dt * f.torque[i]) /
-                         (inertia + f.spin_stiffness[i] * dt * dt);
-          }
-          check(s, i, ctx_.runaway_speed, t.blowup);
+          if (!s.frozen[i]) check(s, i, ctx_.runaway_speed, t.blowup);
         });
     if (sums.blowup.found && !blowup.found) blowup = sums.blowup;
   }
 
   void save(std::ostream& out) const override {
     out.write(reinterpret_cast<const char*>(&step_), 8);
+    projection_.save(out);
   }
-  void load(std::istream& in) override { in.read(reinterpret_cast<char*>(&step_), 8); }
+  void load(std::istream& in) override {
+    in.read(reinterpret_cast<char*>(&step_), 8);
+    projection_.load(in);
+  }
+  std::size_t bytes() const override {
+    return projection_.bytes() + (mobility_.capacity() + response_.capacity()) * 8;
+  }
 
  private:
   IntegratorConfig config_;
   IntegratorContext ctx_;
   std::vector<ThreadSums> sums_;
+  ContactProjection projection_;
+  std::vector<double> mobility_, response_;  // per particle, this step (see advance)
   double step_ = 0;
 };
 

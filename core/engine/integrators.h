@@ -36,6 +36,7 @@
 #include "core/engine/engine_state.h"
 #include "core/engine/force_pass.h"
 #include "core/engine/forces.h"
+#include "core/engine/neighbour_grid.h"
 #include "core/engine/voidage_grid.h"
 
 namespace sedem {
@@ -56,6 +57,10 @@ struct IntegratorContext {
   double runaway_speed = 1;  // above this a speed counts as a blow-up
   double min_radius = 0;
   double max_terminal_speed = 0;  // Stokes / 0.96 of the largest grain: no free grain is faster
+  // exponential: the candidate lists its contact projection gathers over (the engine's).
+  const NeighbourGrid* grid = nullptr;
+  const ForcePass* pass = nullptr;
+  int contact_sweeps = 32;  // at most, per step
 };
 
 class Integrator {
@@ -68,6 +73,7 @@ class Integrator {
   virtual void advance(EngineState& s, const ForceAccumulators& f, double dt, Blowup& blowup) = 0;
   virtual void save(std::ostream& out) const = 0;
   virtual void load(std::istream& in) = 0;
+  virtual std::size_t bytes() const { return 0; }  // working memory
 };
 
 std::unique_ptr<Integrator> make_integrator(const IntegratorConfig& config,

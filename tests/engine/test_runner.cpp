@@ -14,7 +14,7 @@ using test::Grain;
 using test::sample_of;
 using test::scene_with;
 
-// Grains dropped onto the bottom so that contacts, friction and springs are in the state.
+// Grains dropped onto the bottom so that contacts and their carried-over forces are in the state.
 std::vector<Grain> heap() {
   return test::scattered(
       60, -1e-4, 1e-4, 2e-5, 4e-4, [](int k) { return 10e-6 + 3e-6 * (k % 10); }, 9);
