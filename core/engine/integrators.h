@@ -17,16 +17,14 @@
 //
 // exponential: the drag is linear in the velocity over a step (Stokes exactly; Di Felice with its
 //   coefficient frozen at the step's start), so m dv/dt = F - c v is solved exactly over the
-//   step: v = v_inf + (v0 - v_inf) e^(-dt/tau), x advanced by the integral. Contacts are made
-//   stable at any step by folding their stiffness into that damping: F(x + dt v) ~ F(x) - k dt v
-//   with k = K_wall + 2 sum (K_N + K_T) over pairs (a Gershgorin bound on the contact Hessian), so
-//   c_eff = c + k dt. For dt much larger than the contact period this is an overdamped, damped-
-//   Jacobi relaxation that removes at least half of every overlap per step and rests exactly at
-//   the force balance (overlap = net weight / K_N); for dt -> 0 the extra damping vanishes and
-//   the scheme tends to the reference. Rotation likewise: w = (I w0 + dt M) / (I + k_rot dt^2).
+//   step: v = v_inf + (v0 - v_inf) e^(-dt/tau), x advanced by the integral, with no contact
+//   force. Contacts are then overdamped, compliant constraints (contact_projection.h): Jacobi
+//   sweeps find each contact's force so that the overlap ends at force / K_N, each grain moving
+//   in proportion to its mobility over the step; a touching pair falls at its mobility-weighted
+//   mean velocity and a grain on the bed rests at overlap = net weight / K_N. No friction.
 //   Fixed step: fast_step_factor * min t_tr (default 100, i.e. 1000x the reference's start),
 //   at most r_min / u_max so that no grain passes through another between two steps (u_max:
-//   the largest grain's clear-water settling speed).
+//   the largest grain's clear-water settling speed). docs/engine.md has the details.
 
 #include <cstdint>
 #include <iosfwd>
