@@ -5,4 +5,4 @@ cd "$(dirname "$0")/.."
 scripts/setup.sh
 scripts/build.sh
 build/app/sedem run scenes/demo.toml --out out/demo "$@"
-echo "demo: pictures in out/demo/frames/, ParaView series out/demo/particles.pvd"
+echo "demo: pictures in out/demo/frames/ and out/demo/figures/, ParaView series out/demo/*.pvd"
