@@ -72,29 +72,27 @@ void assign_counts(std::vector<SizeClass>& classes, const std::vector<double>& s
   // Sizes whose quota is below one particle get exactly one; the rest share what is left in
   // proportion to their shares. Repeat until no new size falls below one.
   std::vector<bool> pinned(k_count, false);
-  for (bool changed = true; changed;) {
-    changed = false;
-    double free_share = 0;
-    std::int64_t free_count = n_total;
+  double free_share = 0;        // share of the sizes not pinned at one particle
+  std::int64_t free_count = 0;  // particles left for them
+  const auto count_free = [&] {
+    free_share = 0;
+    free_count = n_total;
     for (std::size_t k = 0; k < k_count; ++k) {
       if (pinned[k])
         free_count -= 1;
       else
         free_share += shares[k];
     }
+  };
+  for (bool changed = true; changed;) {
+    changed = false;
+    count_free();
     for (std::size_t k = 0; k < k_count; ++k) {
       if (pinned[k]) continue;
       if (shares[k] / free_share * double(free_count) < 1) pinned[k] = changed = true;
     }
   }
-  double free_share = 0;
-  std::int64_t free_count = n_total;
-  for (std::size_t k = 0; k < k_count; ++k) {
-    if (pinned[k])
-      free_count -= 1;
-    else
-      free_share += shares[k];
-  }
+  count_free();
   std::vector<double> remainder(k_count, -1.0);
   std::int64_t given = 0;
   for (std::size_t k = 0; k < k_count; ++k) {

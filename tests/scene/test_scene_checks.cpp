@@ -5,17 +5,13 @@
 #include <vector>
 
 #include "core/scene/scene_loader.h"
+#include "scene_test_support.h"
 
 namespace sedem {
 namespace {
 
 std::string error_of(const std::string& toml, std::vector<std::string> overrides = {}) {
-  try {
-    parse_scene(toml, "bad.toml", overrides);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
+  return test::scene_error(toml, std::move(overrides));
 }
 
 #define EXPECT_MESSAGE(message, part) \
