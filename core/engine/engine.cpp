@@ -96,10 +96,13 @@ constexpr char kMagic[8] = {'S', 'E', 'D', 'E', 'M', 'C', 'K', '1'};
 
 }  // namespace
 
-// The margin of the candidate lists, in radii.
-constexpr double kListMargin = 2.0;
-
-namespace {}  // namespace
+// The margin of the candidate lists, in radii. The lists are rebuilt when a grain has moved half
+// its margin; the exponential integrator's grains move up to crossing_fraction radii a step,
+// so a wider margin keeps rebuilds to one every few steps (a dilute suspension has almost no
+// candidates anyway, and a settled bed is mostly frozen).
+static double list_margin(const IntegratorConfig& c) {
+  return c.method == "reference" ? 2.0 : std::max(2.0, 8.0 * c.crossing_fraction);
+}
 
 Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::move(sample)) {
   const Particles& p = sample_.particles;
@@ -131,13 +134,14 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
     dmax = std::max(dmax, p.diameter[i]);
   }
   const double reach = model_.lubrication_reach();
+  margin_ = list_margin(scene_.integrator);
   for (std::size_t i = 0; i < n; ++i)
-    search_[i] = 0.5 * state_.diameter[i] * (1 + reach + model_.skin + kListMargin);
+    search_[i] = 0.5 * state_.diameter[i] * (1 + reach + model_.skin + margin_);
   if (n == 0) dmin = dmax = 1e-6;
 
   const Cylinder& cyl = scene_.cylinder;
-  grid_.configure(dmin * (1 + reach + model_.skin + kListMargin),
-                  dmax * (1 + reach + model_.skin + kListMargin), cyl.half_width(), cyl.height);
+  grid_.configure(dmin * (1 + reach + model_.skin + margin_),
+                  dmax * (1 + reach + model_.skin + margin_), cyl.half_width(), cyl.height);
   voidage_.configure(scene_.forces.voidage_cell, cyl.half_width(), cyl.height, cyl.slab_thickness(),
                      scene_.forces.min_voidage, threads_);
   pass_.configure(model_, threads_);
@@ -155,6 +159,7 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
       std::max(10.0, 1e4 * stokes::terminal_velocity(dmax, model_.particle_density, fluid));
   ctx.min_radius = 0.5 * dmin;
   ctx.max_terminal_speed = stokes::terminal_velocity(dmax, model_.particle_density, fluid) / 0.96;
+  ctx.max_radius = 0.5 * dmax;
   ctx.grid = &grid_;
   ctx.pass = &pass_;
   integrator_ = make_integrator(scene_.integrator, ctx);
@@ -244,7 +249,7 @@ void Engine::rebuild_lists() {
 }
 
 // A pair's distance shrinks by at most the sum of both moves; the lists hold every pair within
-// the interaction range plus kListMargin (r_i + r_j), so they stay complete while every
+// the interaction range plus margin_ (r_i + r_j), so they stay complete while every
 // particle has moved less than half its own margin.
 bool Engine::moved_beyond_margin() const {
   const std::size_t n = state_.size();
@@ -255,7 +260,7 @@ bool Engine::moved_beyond_margin() const {
 #pragma omp parallel for num_threads(threads_) if (threads_ > 1) reduction(| : moved)
   for (std::size_t i = 0; i < n; ++i) {
     const double dx = x[i] - x0_[i], dy = y[i] - y0_[i];
-    const double allowed = 0.25 * kListMargin * d[i];  // half the margin of radius r = d/2
+    const double allowed = 0.25 * margin_ * d[i];  // half the margin of radius r = d/2
     moved |= int(dx * dx + dy * dy > allowed * allowed);
   }
   return moved != 0;

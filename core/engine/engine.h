@@ -99,6 +99,7 @@ class Engine {
   std::unique_ptr<Integrator> integrator_;
   int threads_ = 1;
   double freeze_height_ = 0;
+  double margin_ = 2;  // of the candidate lists, in radii
   double time_ = 0;
   EngineStats stats_;
 };

@@ -37,7 +37,12 @@ void describe(IntegratorConfig& c, Schema& s) {
   s.flag("integrator.adaptive", &c.adaptive,
          "reference: grow the step once every particle is at terminal velocity (Sect. 4.6).");
   s.number("integrator.fast_step_factor", &c.fast_step_factor, "", 1, 1e-6, 1e9,
-           "exponential: time step as a multiple of the smallest response time t_tr.");
+           "exponential: upper bound on the step as a multiple of the smallest response time "
+           "t_tr.");
+  s.number("integrator.crossing_fraction", &c.crossing_fraction, "", 1, 0, 1,
+           "exponential: the step lets no moving grain travel more than this fraction of its "
+           "radius, so none passes through another.")
+      .min_exclusive = true;
   s.flag("integrator.freeze_settled", &c.freeze_settled,
          "Freeze particles resting in the bed below the lowest instrument.");
   s.number("integrator.max_step_s", &c.max_step, "s", 1, 1e-12, 1e6, "Upper bound on the step.");

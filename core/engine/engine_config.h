@@ -28,7 +28,8 @@ struct IntegratorConfig {
   std::string method = "exponential";  // reference | exponential
   double step_factor = 0.1;            // reference: dt = factor * min t_tr (paper: 0.1)
   bool adaptive = true;                // reference: the growth rule of Sect. 4.6
-  double fast_step_factor = 100;       // exponential: dt = factor * min t_tr
+  double fast_step_factor = 1e5;       // exponential: dt <= factor * min t_tr
+  double crossing_fraction = 0.8;      // exponential: dt <= fraction * r / speed, every grain
   double max_step = 1.0;               // s, upper bound on any step
   bool freeze_settled = true;          // freeze resting particles below every instrument
   std::int64_t threads = 0;            // 0: all cores

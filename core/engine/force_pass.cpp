@@ -59,6 +59,14 @@ std::size_t ForcePass::bytes() const {
   return b;
 }
 
+namespace {
+// A blow-up, not a contact: deeper than the smaller grain's diameter and than the larger grain's
+// radius. A large grain may step half its radius into a fine one before the contact resolves.
+inline bool too_deep(double overlap, double ri, double rj) {
+  return overlap > std::max(2 * std::min(ri, rj), std::max(ri, rj));
+}
+}  // namespace
+
 void ForcePass::run(const EngineState& s, const NeighbourGrid& grid, const PairHistory& old_springs,
                     PairHistory& new_springs, double dt, ForceAccumulators& out, PassFacts& facts) {
   const std::size_t n = s.size();
@@ -129,7 +137,7 @@ void ForcePass::run(const EngineState& s, const NeighbourGrid& grid, const PairH
             stiff += pair_stiffness;
             touching = true;
             worst = std::max(worst, overlap / std::min(ri, rj));
-            if (overlap > 2 * std::min(ri, rj)) tf.blowup.note(origin[i], "overlap", overlap);
+            if (too_deep(overlap, ri, rj)) tf.blowup.note(origin[i], "overlap", overlap);
             if (cross) jstiff += pair_stiffness;
           } else if (m.contact && overlap > 0) {
             const bool i_first = origin[i] < origin[j];
@@ -148,7 +156,7 @@ void ForcePass::run(const EngineState& s, const NeighbourGrid& grid, const PairH
             if (m.friction) spin += 2 * m.kt * ri * ri;
             touching = true;
             worst = std::max(worst, overlap / std::min(ri, rj));
-            if (overlap > 2 * std::min(ri, rj)) tf.blowup.note(origin[i], "overlap", overlap);
+            if (too_deep(overlap, ri, rj)) tf.blowup.note(origin[i], "overlap", overlap);
             if (cross) {
               jfx -= cfx;
               jfy -= cfy;

@@ -46,6 +46,7 @@ struct ThreadSums {
   double max_change = 0;  // velocity change / own terminal speed, free particles
   double max_rate = 0;    // c/m, free particles
   double max_speed = 0;
+  double max_radii_per_s = 0;  // speed / radius, moving particles
   Blowup blowup;
 };
 
@@ -81,6 +82,7 @@ ThreadSums integrate(int threads, std::size_t n, std::vector<ThreadSums>& sums, 
     total.max_change = std::max(total.max_change, t.max_change);
     total.max_rate = std::max(total.max_rate, t.max_rate);
     total.max_speed = std::max(total.max_speed, t.max_speed);
+    total.max_radii_per_s = std::max(total.max_radii_per_s, t.max_radii_per_s);
     if (t.blowup.found && !total.blowup.found) total.blowup = t.blowup;
   }
   return total;
@@ -183,9 +185,12 @@ class ExponentialIntegrator final : public Integrator {
  public:
   ExponentialIntegrator(const IntegratorConfig& c, const IntegratorContext& x)
       : config_(c), ctx_(x) {
-    step_ = std::min(config_.max_step, config_.fast_step_factor * ctx_.min_response_time);
-    if (ctx_.model->contact && ctx_.max_terminal_speed > 0)
-      step_ = std::min(step_, ctx_.min_radius / ctx_.max_terminal_speed);
+    ceiling_ = std::min(config_.max_step, config_.fast_step_factor * ctx_.min_response_time);
+    const double d = 2 * ctx_.max_radius;
+    settling_ = d > 0 ? ctx_.max_terminal_speed / (d * d) : 0;
+    crossing_ = ctx_.model->contact || ctx_.model->drag == DragLaw::di_felice;
+    // Before any velocity is known, the largest grain at its settling speed sets the step.
+    step_ = limited(ctx_.max_radius > 0 ? ctx_.max_terminal_speed / ctx_.max_radius : 0);
     projection_.configure(*ctx_.model, ctx_.threads, ctx_.contact_sweeps);
   }
   const char* name() const override { return "exponential"; }
@@ -242,11 +247,20 @@ class ExponentialIntegrator final : public Integrator {
       }
     });
     if (project && dt > 0) projection_.run(s, *ctx_.grid, *ctx_.pass, mobility_, response_);
+    // Checks every moving grain, and finds the fastest in radii per second for the next step.
     const ThreadSums sums =
         integrate(ctx_.threads, s.size(), sums_, [&](std::size_t i, ThreadSums& t) {
-          if (!s.frozen[i]) check(s, i, ctx_.runaway_speed, t.blowup);
+          if (s.frozen[i]) return;
+          check(s, i, ctx_.runaway_speed, t.blowup);
+          const double d = s.diameter[i];
+          const double v2 = s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i];
+          // A free grain may reach its settling speed within the step; a supported one not.
+          const double settling = f.stiffness[i] > 0 ? 0.0 : settling_ * d * d;
+          const double speed = std::sqrt(std::max(v2, settling * settling));
+          t.max_radii_per_s = std::max(t.max_radii_per_s, 2 * speed / d);
         });
     if (sums.blowup.found && !blowup.found) blowup = sums.blowup;
+    step_ = limited(sums.max_radii_per_s);
   }
 
   void save(std::ostream& out) const override {
@@ -266,8 +280,16 @@ class ExponentialIntegrator final : public Integrator {
   IntegratorContext ctx_;
   std::vector<ThreadSums> sums_;
   ContactProjection projection_;
+  // The ceiling, or less where a grain moving at `radii_per_s` would cross too far.
+  double limited(double radii_per_s) const {
+    if (!crossing_ || radii_per_s <= 0) return ceiling_;
+    return std::min(ceiling_, config_.crossing_fraction / radii_per_s);
+  }
+
   std::vector<double> mobility_, response_;  // per particle, this step (see advance)
-  double step_ = 0;
+  double step_ = 0, ceiling_ = 0;
+  double settling_ = 0;  // clear-water settling speed / d^2
+  bool crossing_ = false;
 };
 
 }  // namespace

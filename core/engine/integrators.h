@@ -22,9 +22,14 @@
 //   sweeps find each contact's force so that the overlap ends at force / K_N, each grain moving
 //   in proportion to its mobility over the step; a touching pair falls at its mobility-weighted
 //   mean velocity and a grain on the bed rests at overlap = net weight / K_N. No friction.
-//   Fixed step: fast_step_factor * min t_tr (default 100, i.e. 1000x the reference's start),
-//   at most r_min / u_max so that no grain passes through another between two steps (u_max:
-//   the largest grain's clear-water settling speed). docs/engine.md has the details.
+//   Step: the exact drag update needs no step limit of its own; what binds is that no grain may
+//   pass through another between two steps. After every step the next one is set so that no
+//   moving grain travels more than crossing_fraction (0.8) of its own radius, at its speed or,
+//   if nothing supports it, at least its clear-water settling speed: two grains then close by
+//   less than 0.8 (r_i + r_j) in a step, and no centre passes another. Since that speed grows as
+//   d^2, the largest grain still moving sets the step, which therefore grows as the coarse grains
+//   settle out. It is also at most fast_step_factor * min t_tr and max_step. docs/engine.md has the
+//   details.
 
 #include <cstdint>
 #include <iosfwd>
@@ -55,6 +60,7 @@ struct IntegratorContext {
   double runaway_speed = 1;  // above this a speed counts as a blow-up
   double min_radius = 0;
   double max_terminal_speed = 0;  // Stokes / 0.96 of the largest grain: no free grain is faster
+  double max_radius = 0;
   // exponential: the candidate lists its contact projection gathers over (the engine's).
   const NeighbourGrid* grid = nullptr;
   const ForcePass* pass = nullptr;
