@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <tuple>
 
@@ -125,8 +126,8 @@ std::vector<LargeSizeRow> large_size_rows(const std::vector<RunFolder>& runs) {
     for (const auto& t : run.tests) {
       const TestReadings dem = large_sizes(t.dem, kLargeDiameter);
       const TestReadings ref = large_sizes(t.reference, kLargeDiameter);
-      rows.push_back({run.name, t.test, run.text("sample.weighting", "?"), dem.rows.size(),
-                      mean(deviations_from_truth(dem, run.classes)),
+      rows.push_back({run.name, t.test, run.text("sample.weighting", "?"), run.particle_count,
+                      dem.rows.size(), mean(deviations_from_truth(dem, run.classes)),
                       mean(deviations_from_truth(ref, run.classes))});
     }
   return rows;
@@ -151,8 +152,9 @@ std::vector<DepthRow> depth_rows(const std::vector<RunFolder>& runs) {
     for (const auto& t : run.tests) {
       if (t.test != "buoyancy" && t.test != "pipette") continue;
       const auto dev = deviations_from_truth(t.dem, run.classes);
+      const auto ref = deviations_from_truth(t.reference, run.classes);
       rows.push_back({run.name, t.test, run.number("instruments." + t.test + ".depth_fraction"),
-                      t.depth_m, mean_abs(dev), max_abs(dev), t.bias_pp});
+                      t.depth_m, mean_abs(dev), max_abs(dev), mean_abs(ref), t.bias_pp});
     }
   std::sort(rows.begin(), rows.end(), [](const DepthRow& a, const DepthRow& b) {
     return std::tie(a.sample, a.test, a.depth_fraction) <
@@ -161,13 +163,13 @@ std::vector<DepthRow> depth_rows(const std::vector<RunFolder>& runs) {
   return rows;
 }
 
-double depth_trend(const std::vector<DepthRow>& rows) {
+double depth_trend(const std::vector<DepthRow>& rows, bool reference) {
   std::map<std::pair<std::string, std::string>, std::pair<std::vector<double>, std::vector<double>>>
       groups;
   for (const auto& r : rows) {
     auto& [depth, deviation] = groups[{r.sample, r.test}];
     depth.push_back(r.depth_fraction);
-    deviation.push_back(r.mean_abs_deviation);
+    deviation.push_back(reference ? r.reference_mean_abs_deviation : r.mean_abs_deviation);
   }
   std::vector<double> trends;
   for (const auto& [key, g] : groups)
@@ -183,6 +185,9 @@ Verdict depth_verdict(const std::vector<DepthRow>& rows) {
 }
 
 std::vector<ProfileGapRow> profile_gap_rows(const std::vector<RunFolder>& runs) {
+  const auto gap = [](const std::vector<double>& v) {
+    return v.empty() ? std::numeric_limits<double>::quiet_NaN() : mean_abs(v);
+  };
   std::vector<ProfileGapRow> rows;
   for (const auto& run : runs) {
     if (run.classes.empty()) continue;
@@ -192,14 +197,14 @@ std::vector<ProfileGapRow> profile_gap_rows(const std::vector<RunFolder>& runs) 
     for (const auto& p : run.profiles) {
       std::vector<double> thirds[3];
       for (std::size_t k = 0; k < p.depth_m.size(); ++k) {
-        const double bound = std::min(
-            largest, stokes::limiting_diameter(p.depth_m[k], p.time_s, density, fluid_of(run)));
-        if (bound <= 0) continue;
+        // Where Eq. 16 exceeds the largest grain both curves sit at that grain: no test.
+        const double bound =
+            stokes::limiting_diameter(p.depth_m[k], p.time_s, density, fluid_of(run));
+        if (bound <= 0 || bound >= largest) continue;
         const int third = std::clamp(int(3 * p.depth_m[k] / height), 0, 2);
         thirds[third].push_back((p.largest_diameter_m[k] - bound) / bound);
       }
-      rows.push_back(
-          {run.name, p.time_s, mean_abs(thirds[0]), mean_abs(thirds[1]), mean_abs(thirds[2])});
+      rows.push_back({run.name, p.time_s, gap(thirds[0]), gap(thirds[1]), gap(thirds[2])});
     }
   }
   return rows;

@@ -57,7 +57,7 @@ Verdict oscillation_verdict(const std::vector<OscillationRow>& rows);
 // finds coarse mass the sample does not hold.
 struct LargeSizeRow {
   std::string sample, test, weighting;
-  std::size_t readings = 0;
+  std::size_t particles = 0, readings = 0;
   double dem_deviation = 0, reference_deviation = 0;
 };
 std::vector<LargeSizeRow> large_size_rows(const std::vector<RunFolder>& runs);
@@ -70,19 +70,25 @@ Verdict large_size_verdict(const std::vector<LargeSizeRow>& rows);
 struct DepthRow {
   std::string sample, test;
   double depth_fraction = 0, depth_m = 0;
-  double mean_abs_deviation = 0, max_abs_deviation = 0, reference_bias = 0;
+  double mean_abs_deviation = 0, max_abs_deviation = 0;  // DEM against the truth
+  // The reference (the same instrument on the continuum solution) against the truth: the
+  // test's own accuracy at that depth, free of the simulation's scatter.
+  double reference_mean_abs_deviation = 0, reference_bias = 0;
 };
 // Rows of the buoyancy and pipette tests of every run given (the same samples read at
 // several depths), sorted by sample, test, depth.
 std::vector<DepthRow> depth_rows(const std::vector<RunFolder>& runs);
-// Rank correlation of depth and mean deviation, per sample and test, averaged.
-double depth_trend(const std::vector<DepthRow>& rows);
+// Rank correlation of depth and mean deviation (of the DEM, or of the reference), per
+// sample and test, averaged.
+double depth_trend(const std::vector<DepthRow>& rows, bool reference = false);
 // Supports when deeper is worse (trend >= kTrendCorrelation), contradicts when deeper is
 // better (<= -kTrendCorrelation).
 Verdict depth_verdict(const std::vector<DepthRow>& rows);
 
-// Fig. 12 beside it: how far the largest diameter above a depth is from Eq. 16 (capped at
-// the sample's largest grain), relative, in the upper, middle and lower third of the column.
+// Fig. 12 beside it: how far the largest diameter above a depth is from Eq. 16, relative,
+// in the upper, middle and lower third of the column, over the depths where Eq. 16 is below
+// the sample's largest grain (deeper, both curves are that grain). NaN for a third with no
+// such depth.
 struct ProfileGapRow {
   std::string sample;
   double time_s = 0;

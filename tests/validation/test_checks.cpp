@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "bench/validation/checks.h"
+#include "core/physics/stokes.h"
 #include "tests/validation/validation_test_support.h"
 
 namespace sedem::validation {
@@ -96,6 +97,7 @@ TEST(Checks, LargeSizesOverpredictedWhenTheTestsReadLessFinerThanTheTruth) {
   const auto truth = truth_curve("hydrometer", {60, 40, 10});
   RunFolder r = run("s", {});
   r.scene["sample.weighting"] = "equal_mass";
+  r.particle_count = 500;
   for (const char* test : {"hydrometer", "buoyancy", "pipette"}) {
     auto t = truth;
     t.test = test;
@@ -104,6 +106,7 @@ TEST(Checks, LargeSizesOverpredictedWhenTheTestsReadLessFinerThanTheTruth) {
   const auto rows = large_size_rows({r});
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0].weighting, "equal_mass");
+  EXPECT_EQ(rows[0].particles, 500u);
   EXPECT_EQ(rows[0].readings, 2u);
   EXPECT_NEAR(rows[0].dem_deviation, -3.0, 1e-9);
   EXPECT_NEAR(rows[0].reference_deviation, 0.0, 1e-9);
@@ -129,12 +132,38 @@ TEST(Checks, DepthTrendFromTheSameSampleReadAtSeveralDepths) {
   EXPECT_NEAR(rows[0].mean_abs_deviation, 1.0, 1e-9);
   EXPECT_NEAR(rows[2].max_abs_deviation, 5.0, 1e-9);
   EXPECT_NEAR(depth_trend(rows), 1.0, 1e-12);
+  EXPECT_NEAR(rows[2].reference_mean_abs_deviation, 0.0, 1e-9);  // the reference is the truth
+  EXPECT_EQ(depth_trend(rows, true), 0.0);                       // no trend in a constant
   EXPECT_EQ(depth_verdict(rows), Verdict::supports);
 
   std::reverse(runs.begin(), runs.end());  // the same deviations, now shallow is worse
   for (std::size_t k = 0; k < runs.size(); ++k)
     runs[k].scene["instruments.buoyancy.depth_fraction"] = 0.1 + 0.2 * double(k);
   EXPECT_EQ(depth_verdict(depth_rows(runs)), Verdict::contradicts);
+}
+
+TEST(Checks, ProfileGapToEq16PerThirdOfTheColumn) {
+  // At 900 s Eq. 16 stays below the largest grain (70 um) down to the bottom. The profile
+  // follows it at 5 cm, is 10 % short at 20 cm and 50 % short at 40 cm.
+  RunFolder r = run("s", {});
+  RunProfile p;
+  p.time_s = 900;
+  const std::vector<double> depth{0.05, 0.2, 0.4}, share{1.0, 0.9, 0.5};
+  for (std::size_t k = 0; k < depth.size(); ++k) {
+    p.depth_m.push_back(depth[k]);
+    p.largest_diameter_m.push_back(share[k] * stokes::limiting_diameter(depth[k], 900, 2500, {}));
+  }
+  r.profiles = {p};
+  auto rows = profile_gap_rows({r});
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_NEAR(rows[0].upper, 0.0, 1e-12);
+  EXPECT_NEAR(rows[0].middle, 0.1, 1e-12);
+  EXPECT_NEAR(rows[0].lower, 0.5, 1e-12);
+  // At 60 s Eq. 16 passes 70 um above 40 cm: that depth says nothing.
+  r.profiles[0].time_s = 60;
+  rows = profile_gap_rows({r});
+  EXPECT_TRUE(std::isnan(rows[0].lower));
+  EXPECT_FALSE(std::isnan(rows[0].upper));
 }
 
 TEST(Checks, EarlyReadingsAndReducedRunsWithinTheReasonableError) {
