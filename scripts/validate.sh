@@ -62,7 +62,9 @@ for k in "${samples[@]}"; do scenes+=("scenes/sample$k.toml"); done
 small=$(( count / reduce ))
 # The early part of the test: its first hour, or the first quarter of a shorter run.
 early=$(( end / 4 < 3600 ? end / 4 : 3600 ))
-common=(--set "run.end_time_s=$end" ${sets[@]+"${sets[@]}"} --quiet)
+common=(--set "run.end_time_s=$end" ${sets[@]+"${sets[@]}"})
+# Progress (simulated time, ETA) only on a terminal: in a log it is noise.
+if [ ! -t 2 ]; then common+=(--quiet); fi
 lean=(--set output.frames=false --set output.fields=false --set output.particles=false)
 
 if [ "$report_only" = false ]; then

@@ -55,6 +55,37 @@ const char* to_string(Verdict v) {
   return "inconclusive";
 }
 
+std::vector<SizeRangeRow> size_range_rows(const std::vector<RunFolder>& runs) {
+  std::vector<SizeRangeRow> rows;
+  for (const auto& run : runs)
+    for (const auto& t : run.tests) {
+      SizeRangeRow row{run.name, t.test, 0, 0, 0, 0};
+      std::vector<double> small, large;
+      const auto dev = deviations_from_truth(t.dem, run.classes);
+      for (std::size_t k = 0; k < dev.size(); ++k)
+        (t.dem.rows[k].diameter >= kLargeDiameter ? large : small).push_back(dev[k]);
+      row.small_readings = small.size();
+      row.large_readings = large.size();
+      row.small_deviation = mean_abs(small);
+      row.large_deviation = mean_abs(large);
+      rows.push_back(row);
+    }
+  return rows;
+}
+
+Verdict size_range_verdict(const std::vector<SizeRangeRow>& rows) {
+  std::size_t n = 0, better = 0, worse = 0;
+  for (const auto& r : rows) {
+    if (r.small_readings == 0 || r.large_readings == 0) continue;
+    ++n;
+    if (r.small_deviation < r.large_deviation) ++better;
+    if (r.small_deviation > r.large_deviation) ++worse;
+  }
+  if (two_thirds(better, n)) return Verdict::supports;
+  if (two_thirds(worse, n)) return Verdict::contradicts;
+  return Verdict::inconclusive;
+}
+
 std::vector<SmoothingRow> smoothing_rows(const std::vector<RunFolder>& runs) {
   std::vector<SmoothingRow> rows;
   for (const auto& run : runs)

@@ -23,6 +23,19 @@ inline constexpr double kReasonableError = 5.0;  // pp
 // A rank correlation beyond +-this between depth and deviation is a trend.
 inline constexpr double kTrendCorrelation = 0.3;
 
+// 0. "Inside the range allowed by the standards, small particles are easier to measure than
+// large ones": the mean |w_o(test) - w_o(true)| of the readings below and at or above
+// kLargeDiameter.
+struct SizeRangeRow {
+  std::string sample, test;
+  std::size_t small_readings = 0, large_readings = 0;
+  double small_deviation = 0, large_deviation = 0;
+};
+std::vector<SizeRangeRow> size_range_rows(const std::vector<RunFolder>& runs);
+// Over the rows with readings on both sides: supports when at least two thirds measure the
+// small sizes better, contradicts when two thirds measure them worse.
+Verdict size_range_verdict(const std::vector<SizeRangeRow>& rows);
+
 // 1. "The hydrometer test smoothes the real granulometry": a test's roughness (RMS second
 // difference of w_o along the diameter) minus that of the true curve at the same diameters.
 // Negative: smoother than the truth.

@@ -116,6 +116,35 @@ Section cost_section(const ReportInputs& in) {
   return {"cost", s};
 }
 
+Check size_range_check(const ReportInputs& in, std::string& table) {
+  const auto rows = size_range_rows(in.runs);
+  Rows t;
+  std::vector<double> small, large;
+  std::size_t both = 0, better = 0;
+  for (const auto& r : rows) {
+    t.push_back({r.sample, r.test, std::to_string(r.small_readings), pp(r.small_deviation),
+                 std::to_string(r.large_readings), pp(r.large_deviation)});
+    if (r.small_readings && r.large_readings) {
+      ++both;
+      better += r.small_deviation < r.large_deviation ? 1 : 0;
+      small.push_back(r.small_deviation), large.push_back(r.large_deviation);
+    }
+  }
+  const std::string limit = um(kLargeDiameter) + " um";
+  table =
+      markdown_table({"sample", "test", "readings below " + limit, "their mean abs(w - true) (pp)",
+                      "readings at or above " + limit, "their mean abs(w - true) (pp)"},
+                     t);
+  Check c{"size_range",
+          "Inside the range allowed by the standards, small particles are easier to measure than "
+          "large ones",
+          size_range_verdict(rows), "", "Fig. 18; table \"Small and large sizes\""};
+  c.evidence = "mean abs(w - true) below " + limit + " smaller than above it in " +
+               count_of(better, both) + " (sample, test) rows with readings on both sides; mean " +
+               pp(mean(small)) + " pp below, " + pp(mean(large)) + " pp above";
+  return c;
+}
+
 Check smoothing_check(const ReportInputs& in, std::string& table) {
   const auto rows = smoothing_rows(in.runs);
   Rows t;
@@ -190,7 +219,7 @@ Check large_size_check(const ReportInputs& in, std::string& table) {
   for (const auto& [w, k] : by_weighting) {
     negative += k.first;
     n += k.second;
-    per += (per.empty() ? "" : ", ") + w + " " + count_of(k.first, k.second);
+    per += (per.empty() ? "" : "; ") + w + ": " + count_of(k.first, k.second);
   }
   c.evidence = "w(test) - w(true) at phi >= " + um(kLargeDiameter) + " um negative in " +
                count_of(negative, n) + " rows (" + per + "); mean " + pp(mean(dem)) +
@@ -309,8 +338,8 @@ Report build_report(const ReportInputs& in) {
   Report report;
   report.sections = {setup_section(in), runs_section(in), cost_section(in)};
   std::vector<std::pair<std::string, std::string>> details;
-  for (auto* check :
-       {smoothing_check, oscillation_check, large_size_check, depth_check, early_check}) {
+  for (auto* check : {size_range_check, smoothing_check, oscillation_check, large_size_check,
+                      depth_check, early_check}) {
     std::string table;
     report.checks.push_back(check(in, table));
     details.emplace_back(report.checks.back().id, table);

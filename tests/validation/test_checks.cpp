@@ -26,6 +26,24 @@ TestReadings shifted(TestReadings c, const std::vector<double>& by) {
   return c;
 }
 
+TEST(Checks, SmallSizesAgainstLargeSizes) {
+  // 50 and 30 um are large (off by 6 and 2 pp), 10 um small (off by 1 pp).
+  const auto truth = truth_curve("pipette", {50, 30, 10});
+  const RunFolder r = run("s", {run_test(shifted(truth, {6, -2, 1}), truth)});
+  const auto rows = size_range_rows({r});
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].large_readings, 2u);
+  EXPECT_EQ(rows[0].small_readings, 1u);
+  EXPECT_NEAR(rows[0].large_deviation, 4.0, 1e-9);
+  EXPECT_NEAR(rows[0].small_deviation, 1.0, 1e-9);
+  EXPECT_EQ(size_range_verdict(rows), Verdict::supports);
+  const RunFolder worse = run("s", {run_test(shifted(truth, {0, 1, 9}), truth)});
+  EXPECT_EQ(size_range_verdict(size_range_rows({worse})), Verdict::contradicts);
+  const auto large_only = truth_curve("pipette", {50, 30});
+  const RunFolder early = run("s", {run_test(large_only, large_only)});
+  EXPECT_EQ(size_range_verdict(size_range_rows({early})), Verdict::inconclusive);
+}
+
 TEST(Checks, SmoothingSupportedWhenTheHydrometerIsSmootherThanTheTruthAndTheOthers) {
   // A kinked truth (100 % above 45 um, 10 % per 10 um below), read at 60 ... 20 um: along
   // the diameter 20, 30, 40, 100, 100; second differences 0, 50, -60, roughness 45.09.

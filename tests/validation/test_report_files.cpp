@@ -125,7 +125,7 @@ TEST(ReportFiles, TheReportHasEverySectionOfTheDocumentAndOneVerdictPerConclusio
   in.runs = {read_run_folder(fake_run("sample2"))};
   in.early_s = 30;
   const Report report = build_report(in);
-  ASSERT_EQ(report.checks.size(), 5u);
+  ASSERT_EQ(report.checks.size(), 6u);
   std::ifstream doc(fs::path(SEDEM_SOURCE_DIR) / "docs" / "validation.md");
   std::stringstream text;
   text << doc.rdbuf();
@@ -142,8 +142,8 @@ TEST(ReportFiles, TheReportHasEverySectionOfTheDocumentAndOneVerdictPerConclusio
   }
   // The pipette reads 97 at 60 um (true 100) and 45 at 30 um (true 40): at large sizes the
   // mean is (-3 + 5) / 2 = +1 pp; one row positive -> contradicts.
-  EXPECT_EQ(report.checks[2].id, "large_sizes");
-  EXPECT_EQ(report.checks[2].verdict, Verdict::contradicts);
+  EXPECT_EQ(report.checks[3].id, "large_sizes");
+  EXPECT_EQ(report.checks[3].verdict, Verdict::contradicts);
 }
 
 }  // namespace
