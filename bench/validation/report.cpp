@@ -27,6 +27,7 @@ std::string count_of(std::size_t k, std::size_t n) {
 
 // The full test: 24 h, the scene files' particle count.
 constexpr double kFullEndTime = 86400;
+constexpr double kFullParticles = 30000;
 
 Section setup_section(const ReportInputs& in) {
   std::string s;
@@ -103,6 +104,22 @@ Section cost_section(const ReportInputs& in) {
       short_runs ? "A short run: its ratio sets a few particles over minutes against the paper's "
                    "full runs and means nothing yet.\n\n"
                  : "";
+  if (short_runs) {
+    // What the full runs would take if the step and the throughput stayed as measured here.
+    std::vector<double> days;
+    for (const auto& r : in.runs)
+      if (r.simulated_time_s > 0 && r.particle_steps_per_s > 0)
+        days.push_back(r.steps / r.simulated_time_s * kFullEndTime * kFullParticles /
+                       r.particle_steps_per_s / 86400);
+    if (!days.empty())
+      s += "At the step (" +
+           significant(in.runs.front().simulated_time_s / in.runs.front().steps, 2) +
+           " s) and the particle-steps per second of these runs, one full run (" +
+           fixed(kFullParticles, 0) + " particles, " + fixed(kFullEndTime, 0) +
+           " s) would take about " + fixed(*std::min_element(days.begin(), days.end()), 0) +
+           " to " + fixed(*std::max_element(days.begin(), days.end()), 0) +
+           " days of wall time per sample; a rough figure, since neither stays the same.\n\n";
+  }
   s += markdown_table(
       {"sample", "particles", "simulated (h)", "wall (s)", "wall per simulated hour (s)",
        "paper: total (per simulated hour)", "sedem faster by"},
