@@ -29,6 +29,15 @@ std::string count_of(std::size_t k, std::size_t n) {
 constexpr double kFullEndTime = 86400;
 constexpr double kFullParticles = 30000;
 
+// A list of numbers from the scene, as the scene file writes it: [0.5, 1, 2].
+std::string times_of(const RunFolder& run, const std::string& key) {
+  const auto it = run.scene.find(key);
+  if (it == run.scene.end() || !it->is_array()) return "-";
+  std::string s;
+  for (const auto& v : *it) s += (s.empty() ? "" : ", ") + significant(v.get<double>(), 6);
+  return "[" + s + "]";
+}
+
 Section setup_section(const ReportInputs& in) {
   std::string s;
   double end = 0;
@@ -41,21 +50,29 @@ Section setup_section(const ReportInputs& in) {
   if (!full)
     s += "> **Short pipeline run** (" + std::to_string(particles) + " particles, " + fixed(end, 0) +
          " s simulated): it checks the machinery, not the paper. The full validation "
-         "simulates the whole test (86 400 s) with the scene files' 30 000 particles; "
+         "simulates the whole test (86 400 s) with the scene files' 30 000 particles, 220 sizes "
+         "and standard reading times; "
          "rerun `scripts/validate.sh` to regenerate every table and figure here.\n\n";
   Rows rows;
   for (const auto& r : in.runs)
     rows.push_back({r.name, r.status, std::to_string(r.particle_count),
-                    fixed(r.simulated_time_s, 0), r.text("sample.weighting"),
-                    r.text("integrator.method")});
-  s += markdown_table({"sample", "status", "particles", "simulated (s)", "weighting", "integrator"},
-                      rows);
+                    fixed(r.number("sample.size_count"), 0), fixed(r.simulated_time_s, 0),
+                    r.text("sample.weighting"), r.text("integrator.method")});
+  s += markdown_table(
+      {"sample", "status", "particles", "sizes", "simulated (s)", "weighting", "integrator"}, rows);
+  if (!in.runs.empty()) {
+    s += "\nReading times (min):";
+    for (const auto& test : kTests)
+      s += " " + test + " " + times_of(in.runs.front(), "instruments." + test + ".times_min") +
+           (test == kTests.back() ? "." : ";");
+    s += "\n";
+  }
   std::set<double> fractions;
   for (const auto& r : in.depth) fractions.insert(r.number("instruments.pipette.depth_fraction"));
   s += "\nAlso: " + std::to_string(in.reduced.size()) + " runs with fewer particles (" +
        (in.reduced.empty() ? std::string("none")
                            : std::to_string(in.reduced.front().particle_count) + " particles") +
-       "), " + std::to_string(in.weighting.size()) + " of them again with `" +
+       "), " + std::to_string(in.weighting.size()) + " runs with as few particles and `" +
        (in.weighting.empty() ? std::string("-") : in.weighting.front().text("sample.weighting")) +
        "` weighting, and the particles of the five runs read again with the sphere and the "
        "pipette at " +
