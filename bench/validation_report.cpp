@@ -22,9 +22,17 @@ namespace {
 using namespace sedem::validation;
 namespace fs = std::filesystem;
 
+// The folders that can be read; a run that failed before writing its results is named and
+// left out, so that one failed run of many does not lose the report.
 std::vector<RunFolder> read_all(const std::vector<std::string>& dirs) {
   std::vector<RunFolder> runs;
-  for (const auto& d : dirs) runs.push_back(read_run_folder(d));
+  for (const auto& d : dirs) {
+    try {
+      runs.push_back(read_run_folder(d));
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "sedem_validation_report: left out: %s\n", e.what());
+    }
+  }
   return runs;
 }
 
@@ -75,6 +83,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     in.runs = read_all(runs);
+    if (in.runs.empty()) throw std::runtime_error("none of the --runs folders can be read");
     in.reduced = read_all(reduced);
     in.weighting = read_all(weighting);
     in.depth = read_all(depth);

@@ -56,6 +56,7 @@ for exe in "$sedem" "$report"; do
   fi
 done
 
+mkdir -p "$out"
 samples=(1 2 3 4 5)
 scenes=()
 for k in "${samples[@]}"; do scenes+=("scenes/sample$k.toml"); done
@@ -67,15 +68,24 @@ common=(--set "run.end_time_s=$end" ${sets[@]+"${sets[@]}"})
 if [ ! -t 2 ]; then common+=(--quiet); fi
 lean=(--set output.frames=false --set output.fields=false --set output.particles=false)
 
+# A failed run is reported (its status shows in the report) rather than losing the others;
+# Ctrl-C stops the whole validation.
+batch() {
+  local status=0
+  "$sedem" batch "$@" || status=$?
+  if [ "$status" -eq 130 ]; then exit 130; fi
+  if [ "$status" -ne 0 ]; then echo "validate.sh: a run failed (exit $status); see run.json" >&2; fi
+}
+
 if [ "$report_only" = false ]; then
   echo "validate.sh: five samples, $count particles, $end s -> $out/runs"
-  "$sedem" batch "${scenes[@]}" --out "$out/runs" --set "sample.simulated_count=$count" \
+  batch "${scenes[@]}" --out "$out/runs" --set "sample.simulated_count=$count" \
     "${common[@]}"
   echo "validate.sh: the same with $small particles -> $out/reduced"
-  "$sedem" batch "${scenes[@]}" --out "$out/reduced" --set "sample.simulated_count=$small" \
+  batch "${scenes[@]}" --out "$out/reduced" --set "sample.simulated_count=$small" \
     "${lean[@]}" "${common[@]}"
   echo "validate.sh: $small particles, count weighting -> $out/weighting"
-  "$sedem" batch "${scenes[@]}" --out "$out/weighting" --set "sample.simulated_count=$small" \
+  batch "${scenes[@]}" --out "$out/weighting" --set "sample.simulated_count=$small" \
     --set sample.weighting=uniform_count "${lean[@]}" "${common[@]}"
 fi
 
@@ -84,12 +94,12 @@ depth_runs=()
 for k in "${samples[@]}"; do
   for f in $depths; do
     dir="$out/depth/sample${k}_depth$f"
-    "$report" variant "$out/runs/sample$k" "$dir" \
+    if "$report" variant "$out/runs/sample$k" "$dir" \
       --set "instruments.buoyancy.depth_fraction=$f" --set "instruments.pipette.depth_fraction=$f" \
       --set instruments.hydrometer.enabled=false --set output.frames=false \
-      --set output.fields=false
-    "$sedem" render "$dir" --quiet
-    depth_runs+=("$dir")
+      --set output.fields=false && "$sedem" render "$dir" --quiet; then
+      depth_runs+=("$dir")
+    fi
   done
 done
 
@@ -100,7 +110,8 @@ for k in "${samples[@]}"; do
   reduced+=("$out/reduced/sample$k")
   weighting+=("$out/weighting/sample$k")
 done
-"$sedem" render "${runs[@]}" --out "$out/figures" --quiet
+"$sedem" render "${runs[@]}" --out "$out/figures" --quiet ||
+  echo "validate.sh: drawing the figures failed; the report goes on without new ones" >&2
 mkdir -p docs/validation
 for f in fig11_column fig12_largest_diameter fig13_bulb_density fig14_bulb_average \
   fig15_hydrometer fig16_buoyancy fig17_pipette fig18_granulometry; do
@@ -110,5 +121,5 @@ done
 cores=$(nproc)
 cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//' || true)
 "$report" report --runs "${runs[@]}" --reduced "${reduced[@]}" --weighting "${weighting[@]}" \
-  --depth "${depth_runs[@]}" --early-s "$early" --machine "$cores cores, ${cpu:-unknown CPU}" \
+  ${depth_runs[@]+--depth "${depth_runs[@]}"} --early-s "$early" --machine "$cores cores, ${cpu:-unknown CPU}" \
   --update "$doc" | tee "$out/verdicts.txt"
