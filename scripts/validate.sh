@@ -1,0 +1,125 @@
+#!/usr/bin/env bash
+# The validation of docs/validation.md: runs the paper's five samples, draws the Figs. 11-18
+# equivalents side by side, copies them into docs/validation/ and regenerates the report's
+# tables (the parts of docs/validation.md between its "generated" markers).
+#
+#   scripts/validate.sh [--count N] [--end S] [--out DIR] [--reduce F] [--set key=value]...
+#                       [--short] [--report-only] [--sedem EXE] [--report EXE] [--doc FILE]
+#
+# Defaults are the full validation: the scene files' 30 000 particles, the whole test
+# (86 400 s). --short is a pipeline check of a few minutes: 120 particles in 30 sizes, 120 s,
+# the hydrometer read at 0.5, 1, 1.5 and 2 min, the sphere and the pipette at 0.25, 0.5,
+# 0.75, 1, 1.5 and 2 min. --set applies to every run. Besides the five runs it makes the
+# same runs with F times fewer particles (default 4), those again with count weighting, and
+# reads the five runs' particles again with the sphere and the pipette at several depths.
+# --report-only skips the simulations and uses what --out holds.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+count=30000
+end=86400
+out=out/validation
+reduce=4
+report_only=false
+sedem=build/app/sedem
+report=build/bench/sedem_validation_report
+doc=docs/validation.md
+sets=()
+depths="0.1 0.2 0.3 0.5 0.7"
+
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --count) count="$2"; shift 2 ;;
+    --end) end="$2"; shift 2 ;;
+    --out) out="$2"; shift 2 ;;
+    --reduce) reduce="$2"; shift 2 ;;
+    --set) sets+=(--set "$2"); shift 2 ;;
+    --short)
+      count=120; end=120
+      sets+=(--set sample.size_count=30 --set "instruments.hydrometer.times_min=[0.5,1,1.5,2]"
+        --set "instruments.buoyancy.times_min=[0.25,0.5,0.75,1,1.5,2]"
+        --set "instruments.pipette.times_min=[0.25,0.5,0.75,1,1.5,2]")
+      shift ;;
+    --report-only) report_only=true; shift ;;
+    --sedem) sedem="$2"; shift 2 ;;
+    --report) report="$2"; shift 2 ;;
+    --doc) doc="$2"; shift 2 ;;
+    -h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "validate.sh: unknown option $1 (see --help)" >&2; exit 1 ;;
+  esac
+done
+
+for exe in "$sedem" "$report"; do
+  if [ ! -x "$exe" ]; then
+    echo "validate.sh: $exe not found; build it: ninja -C build sedem sedem_validation_report" >&2
+    exit 1
+  fi
+done
+
+mkdir -p "$out"
+samples=(1 2 3 4 5)
+scenes=()
+for k in "${samples[@]}"; do scenes+=("scenes/sample$k.toml"); done
+small=$(( count / reduce ))
+# The early part of the test: its first hour, or the first quarter of a shorter run.
+early=$(( end / 4 < 3600 ? end / 4 : 3600 ))
+common=(--set "run.end_time_s=$end" ${sets[@]+"${sets[@]}"})
+# Progress (simulated time, ETA) only on a terminal: in a log it is noise.
+if [ ! -t 2 ]; then common+=(--quiet); fi
+lean=(--set output.frames=false --set output.fields=false --set output.particles=false)
+
+# A failed run is reported (its status shows in the report) rather than losing the others;
+# Ctrl-C stops the whole validation.
+batch() {
+  local status=0
+  "$sedem" batch "$@" || status=$?
+  if [ "$status" -eq 130 ]; then exit 130; fi
+  if [ "$status" -ne 0 ]; then echo "validate.sh: a run failed (exit $status); see run.json" >&2; fi
+}
+
+if [ "$report_only" = false ]; then
+  echo "validate.sh: five samples, $count particles, $end s -> $out/runs"
+  batch "${scenes[@]}" --out "$out/runs" --set "sample.simulated_count=$count" \
+    "${common[@]}"
+  echo "validate.sh: the same with $small particles -> $out/reduced"
+  batch "${scenes[@]}" --out "$out/reduced" --set "sample.simulated_count=$small" \
+    "${lean[@]}" "${common[@]}"
+  echo "validate.sh: $small particles, count weighting -> $out/weighting"
+  batch "${scenes[@]}" --out "$out/weighting" --set "sample.simulated_count=$small" \
+    --set sample.weighting=uniform_count "${lean[@]}" "${common[@]}"
+fi
+
+echo "validate.sh: the five runs' particles read at depths $depths (x H) -> $out/depth"
+depth_runs=()
+for k in "${samples[@]}"; do
+  for f in $depths; do
+    dir="$out/depth/sample${k}_depth$f"
+    if "$report" variant "$out/runs/sample$k" "$dir" \
+      --set "instruments.buoyancy.depth_fraction=$f" --set "instruments.pipette.depth_fraction=$f" \
+      --set instruments.hydrometer.enabled=false --set output.frames=false \
+      --set output.fields=false && "$sedem" render "$dir" --quiet; then
+      depth_runs+=("$dir")
+    fi
+  done
+done
+
+echo "validate.sh: figures side by side -> $out/figures and docs/validation/"
+runs=() reduced=() weighting=()
+for k in "${samples[@]}"; do
+  runs+=("$out/runs/sample$k")
+  reduced+=("$out/reduced/sample$k")
+  weighting+=("$out/weighting/sample$k")
+done
+"$sedem" render "${runs[@]}" --out "$out/figures" --quiet ||
+  echo "validate.sh: drawing the figures failed; the report goes on without new ones" >&2
+mkdir -p docs/validation
+for f in fig11_column fig12_largest_diameter fig13_bulb_density fig14_bulb_average \
+  fig15_hydrometer fig16_buoyancy fig17_pipette fig18_granulometry; do
+  if [ -f "$out/figures/$f.png" ]; then cp "$out/figures/$f.png" docs/validation/; fi
+done
+
+cores=$(nproc)
+cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//' || true)
+"$report" report --runs "${runs[@]}" --reduced "${reduced[@]}" --weighting "${weighting[@]}" \
+  ${depth_runs[@]+--depth "${depth_runs[@]}"} --early-s "$early" --machine "$cores cores, ${cpu:-unknown CPU}" \
+  --update "$doc" | tee "$out/verdicts.txt"
