@@ -78,10 +78,11 @@ int main(int argc, char** argv) {
   BenchOptions bench_options;
   auto* bench_cmd = cli.add_subcommand(
       "bench",
-      "Run a benchmark: engine (throughput, memory, stability) or accuracy (run time "
-      "against error for every sample); arguments after -- go to it");
-  bench_cmd->add_option("which", bench_options.which, "engine or accuracy")
-      ->check(CLI::IsMember({"engine", "accuracy"}))
+      "Run a benchmark: engine (throughput, memory, stability), accuracy (run time "
+      "against error for every sample) or speedup (fast against reference integrator, side by "
+      "side); arguments after -- go to it");
+  bench_cmd->add_option("which", bench_options.which, "engine, accuracy or speedup")
+      ->check(CLI::IsMember({"engine", "accuracy", "speedup"}))
       ->capture_default_str();
   bench_cmd->add_option("args", bench_options.args, "Arguments for the benchmark (after --)");
 

@@ -16,6 +16,7 @@ SimulationRun simulate(const Scene& scene, Sample sample) {
   }
   run.results = instruments.results();
   run.stats = engine.stats();
+  run.last = engine.particles();
   run.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;

@@ -13,6 +13,7 @@ struct SimulationRun {
   TestResults results;
   EngineStats stats;
   std::size_t particles = 0;
+  Particles last;  // the particles at the last reading, in sample order
   double wall_seconds = 0;
 };
 
