@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <vector>
 
@@ -9,11 +10,34 @@
 
 namespace sedem {
 
+std::vector<std::uint64_t> band_order(std::uint64_t bands) {
+  // Bands by the golden-ratio points frac(k / phi): each prefix of the order is spread over
+  // the height, so a few consecutive particles never crowd into neighbouring bands.
+  std::vector<std::uint64_t> k(bands);
+  std::iota(k.begin(), k.end(), 0u);
+  auto golden = [](std::uint64_t a) {
+    const double f = double(a) * 0.61803398874989484820;
+    return f - std::floor(f);
+  };
+  std::sort(k.begin(), k.end(), [&](auto a, auto b) { return golden(a) < golden(b); });
+  std::vector<std::uint64_t> band(bands);
+  for (std::uint64_t rank = 0; rank < bands; ++rank) band[k[rank]] = rank;
+  return band;
+}
+
 void place_low_discrepancy(Particles& p, const Cylinder& c, std::uint64_t seed) {
   const std::size_t n = p.size();
   if (n == 0) return;
   RandomStream random(seed);
   const UnitPoint shift{random.uniform(), random.uniform()};
+
+  // The section is about seven times as tall as it is wide: one R2 set stretched over it
+  // would stand in rows seven times farther apart than its columns, and a circle a few rows
+  // tall (the pipette's) would count them coarsely. Near-square bands, particle i in band
+  // (i mod bands) at point i / bands of the band's own R2 sequence, keep the pattern as fine
+  // across as along, and every run of particles shares itself out evenly among the bands.
+  const auto bands = std::max<std::uint64_t>(1, std::uint64_t(std::llround(c.height / c.diameter)));
+  const std::vector<std::uint64_t> band_of = band_order(bands);
 
   // Large particles first: in a dense sample the small ones fit into the gaps they leave.
   std::vector<std::uint32_t> order(n);
@@ -38,8 +62,11 @@ void place_low_discrepancy(Particles& p, const Cylinder& c, std::uint64_t seed) 
     // The centre's span: inside the walls, above the bottom, below the surface.
     const double x_lo = -c.half_width() + r, x_hi = c.half_width() - r;
     const double y_lo = r, y_hi = c.height - r;
-    const UnitPoint target = r2_point(i, shift);
-    const double x = x_lo + target.u * (x_hi - x_lo), y = y_lo + target.v * (y_hi - y_lo);
+    const std::uint64_t k = i % bands;
+    // Each band its own shift, so that the bands do not repeat one pattern.
+    const UnitPoint target = r2_point(i / bands, r2_point(k, shift));
+    const double x = x_lo + target.u * (x_hi - x_lo);
+    const double y = y_lo + (double(band_of[k]) + target.v) / double(bands) * (y_hi - y_lo);
     if (put(i, x, y)) continue;
     // Taken: random points in ever larger squares around it, so the particle stays as near
     // its point as there is room and the spread stays even at any larger scale.
