@@ -6,6 +6,7 @@
 //
 //   sedem_bench_placement_noise [--scenes ...] [--counts 1000,4000] [--seeds 10]
 //                               [--methods stratified,low_discrepancy] [--set key=value ...]
+//                               [--speed 1]
 //
 // Prints, per scene, method, count and test, the mean and largest error over the seeds (pp)
 // and the mean signed difference DEM - reference over seeds and readings (a bias would not
@@ -56,12 +57,16 @@ int main(int argc, char** argv) {
   std::vector<std::string> methods{"stratified", "low_discrepancy"};
   std::vector<std::string> sets;
   int seeds = 10;
+  double speed = 1;
   std::string out = "bench-out";
   cli.add_option("--scenes", scenes, "Scene files")->capture_default_str();
   cli.add_option("--counts", counts, "Simulated particle counts")->delimiter(',');
   cli.add_option("--seeds", seeds, "Seeds per configuration (1..N)")->capture_default_str();
   cli.add_option("--methods", methods, "sample.placement.method values")->delimiter(',');
   cli.add_option("--set", sets, "A key set in every run");
+  cli.add_option("--speed", speed,
+                 "Factor on every terminal velocity (a hindered settling the reference ignores)")
+      ->capture_default_str();
   cli.add_option("--out", out, "Folder for the CSV")->capture_default_str();
   CLI11_PARSE(cli, argc, argv);
 
@@ -94,8 +99,9 @@ int main(int argc, char** argv) {
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
           std::vector<double> velocity;
           for (const auto& c : sample.classes)
-            velocity.push_back(reference_terminal_velocity(scene.forces.drag, c.diameter,
-                                                           sample.particle_density, scene.fluid));
+            velocity.push_back(speed * reference_terminal_velocity(scene.forces.drag, c.diameter,
+                                                                   sample.particle_density,
+                                                                   scene.fluid));
           InstrumentPanel panel(scene, sample);
           for (double t : panel.reading_times())
             panel.observe(t, settled(sample.particles, velocity, t));
