@@ -9,6 +9,7 @@
 #include "core/sample/random_stream.h"
 
 namespace sedem {
+namespace {
 
 std::vector<std::uint64_t> band_order(std::uint64_t bands) {
   // Bands by the golden-ratio points frac(k / phi): each prefix of the order is spread over
@@ -24,6 +25,8 @@ std::vector<std::uint64_t> band_order(std::uint64_t bands) {
   for (std::uint64_t rank = 0; rank < bands; ++rank) band[k[rank]] = rank;
   return band;
 }
+
+}  // namespace
 
 void place_low_discrepancy(Particles& p, const Cylinder& c, std::uint64_t seed) {
   const std::size_t n = p.size();
