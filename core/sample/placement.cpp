@@ -4,99 +4,13 @@
 #include <cmath>
 #include <numbers>
 #include <numeric>
-#include <sstream>
 #include <vector>
 
+#include "core/sample/overlap_grid.h"
 #include "core/sample/random_stream.h"
-#include "core/scene/scene_loader.h"
 
 namespace sedem {
 namespace {
-
-// The particles placed so far, binned by size band (diameters within a factor of two share
-// a band), each band on a grid of its own: a query then scans a few bins per band whatever
-// the ratio of the largest to the smallest size, and memory stays proportional to N.
-class OverlapGrid {
- public:
-  OverlapGrid(const Particles& p, const Cylinder& c) : p_(p), left_(-c.half_width()) {
-    const std::size_t n = p.size();
-    d_max_ = *std::max_element(p.diameter.begin(), p.diameter.end());
-    std::vector<double> band_max(kBands, 0.0);
-    std::vector<std::size_t> band_count(kBands, 0);
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t b = band_of(p.diameter[i]);
-      band_max[b] = std::max(band_max[b], p.diameter[i]);
-      band_count[b] += 1;
-    }
-    const double area = c.diameter * c.height;
-    bands_.resize(kBands);
-    for (std::size_t b = 0; b < kBands; ++b) {
-      if (band_count[b] == 0) continue;
-      Band& band = bands_[b];
-      band.max_radius = 0.5 * band_max[b];
-      // At least a diameter wide (a query reaches one bin each side), and no more bins than
-      // about four per particle.
-      band.bin = std::max(band_max[b], std::sqrt(area / (4.0 * double(band_count[b]))));
-      band.nx = std::max<std::int64_t>(1, std::int64_t(std::ceil(c.diameter / band.bin)));
-      band.ny = std::max<std::int64_t>(1, std::int64_t(std::ceil(c.height / band.bin)));
-      band.head.assign(std::size_t(band.nx * band.ny), -1);
-    }
-    next_.assign(n, -1);
-  }
-
-  bool overlaps(double x, double y, double r) const {
-    for (const Band& band : bands_) {
-      if (band.head.empty()) continue;
-      const double reach = r + band.max_radius;
-      const std::int64_t ix0 = bin_index(x - reach - left_, band.bin, band.nx);
-      const std::int64_t ix1 = bin_index(x + reach - left_, band.bin, band.nx);
-      const std::int64_t iy0 = bin_index(y - reach, band.bin, band.ny);
-      const std::int64_t iy1 = bin_index(y + reach, band.bin, band.ny);
-      for (std::int64_t iy = iy0; iy <= iy1; ++iy) {
-        for (std::int64_t ix = ix0; ix <= ix1; ++ix) {
-          for (std::int32_t j = band.head[std::size_t(iy * band.nx + ix)]; j >= 0;
-               j = next_[std::size_t(j)]) {
-            const double dx = x - p_.x[std::size_t(j)], dy = y - p_.y[std::size_t(j)];
-            const double touch = r + 0.5 * p_.diameter[std::size_t(j)];
-            if (dx * dx + dy * dy < touch * touch) return true;
-          }
-        }
-      }
-    }
-    return false;
-  }
-
-  void insert(std::size_t i) {
-    Band& band = bands_[band_of(p_.diameter[i])];
-    const std::int64_t ix = bin_index(p_.x[i] - left_, band.bin, band.nx);
-    const std::int64_t iy = bin_index(p_.y[i], band.bin, band.ny);
-    std::int32_t& head = band.head[std::size_t(iy * band.nx + ix)];
-    next_[i] = head;
-    head = std::int32_t(i);
-  }
-
- private:
-  static constexpr std::size_t kBands = 8;
-  struct Band {
-    double bin = 0, max_radius = 0;
-    std::int64_t nx = 0, ny = 0;
-    std::vector<std::int32_t> head;  // first particle of each bin, -1: none
-  };
-
-  std::size_t band_of(double d) const {
-    const double b = std::floor(std::log2(d_max_ / d));
-    return std::size_t(std::clamp(b, 0.0, double(kBands - 1)));
-  }
-  static std::int64_t bin_index(double coordinate, double bin, std::int64_t n) {
-    return std::clamp<std::int64_t>(std::int64_t(std::floor(coordinate / bin)), 0, n - 1);
-  }
-
-  const Particles& p_;
-  double left_;
-  double d_max_ = 0;
-  std::vector<Band> bands_;
-  std::vector<std::int32_t> next_;  // next particle in the same bin
-};
 
 // Where a centre may go: the cell's span, cut to the span the walls allow. A cell narrower
 // than a radius at a wall lies wholly outside that span; the particle then takes the strip
@@ -130,6 +44,14 @@ double area_fraction(const Particles& p, const Cylinder& c) {
 
 void place_particles(Particles& p, const Cylinder& c, const PlacementConfig& config,
                      std::uint64_t seed) {
+  if (config.method == "low_discrepancy")
+    place_low_discrepancy(p, c, seed);
+  else
+    place_stratified(p, c, config, seed);
+}
+
+void place_stratified(Particles& p, const Cylinder& c, const PlacementConfig& config,
+                      std::uint64_t seed) {
   const std::size_t n = p.size();
   if (n == 0) return;
   RandomStream random(seed);
@@ -206,13 +128,7 @@ void place_particles(Particles& p, const Cylinder& c, const PlacementConfig& con
       }
       if (reach >= side) break;
     }
-    if (!done) {
-      std::ostringstream os;
-      os << "cannot place particle " << placed + 1 << " of " << n << " (diameter "
-         << p.diameter[i] * 1e6 << " um) without overlap: the particles cover "
-         << area_fraction(p, c) << " of the section's plane; lower sample.simulated_count";
-      throw SceneError(os.str());
-    }
+    if (!done) throw no_room_error(p, c, placed, i);
   }
 }
 

@@ -41,9 +41,16 @@ void describe(SampleConfig& c, Schema& s) {
            "log_normal: standard deviation of ln d; rosin_rammler: uniformity exponent n.");
   s.number("sample.grading.diameter_um", &c.grading.diameter, "um", 1e-6, 0.01, 10000,
            "single: the one grain size.");
+  s.choice("sample.placement.method", &c.placement.method, {"low_discrepancy", "stratified"},
+           "low_discrepancy: the particles, finest first, on seeded R2 quasi-random points in "
+           "near-square bands, so every size and every run of sizes is spread evenly across "
+           "and down the section, as in the well-shaken suspension (the instruments then see "
+           "a half to a third of the sampling noise); stratified: the paper's random points in an "
+           "n_mt x n_mt matrix of cells (Fig. 6).");
   s.integer("sample.placement.cells_per_side", &c.placement.cells_per_side, 0, 100000,
-            "n_mt: the section is cut into n_mt x n_mt cells of its own aspect ratio and the "
-            "particles are spread evenly over them (Fig. 6); 0: ceil(sqrt(particle count)).");
+            "stratified: n_mt, the section is cut into n_mt x n_mt cells of its own aspect "
+            "ratio and the particles are spread evenly over them (Fig. 6); 0: ceil(sqrt(particle "
+            "count)).");
   s.number("sample.placement.max_area_fraction", &c.placement.max_area_fraction, "", 1, 1e-6, 0.5,
            "Largest share of the section's plane the particles may cover; a denser scene is "
            "refused, as random placement without overlap cannot reach it reliably.");

@@ -26,8 +26,9 @@ struct GradingConfig {
 
 // Where the particles start (Fig. 6).
 struct PlacementConfig {
-  std::int64_t cells_per_side = 0;  // n_mt; 0: the paper's ceil(sqrt(particle count))
-  double max_area_fraction = 0.4;   // above this a scene is refused as unplaceable
+  std::int64_t cells_per_side = 0;         // n_mt; 0: the paper's ceil(sqrt(particle count))
+  double max_area_fraction = 0.4;          // above this a scene is refused as unplaceable
+  std::string method = "low_discrepancy";  // low_discrepancy | stratified
 };
 
 // How the sample is discretised, weighted and placed (Sect. 4.4).

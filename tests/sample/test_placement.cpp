@@ -43,14 +43,14 @@ TEST(Placement, EveryCellHoldsItsShare) {
   const Cylinder c;
   {  // the paper's rule: 1000 particles in 32 x 32 cells, none holds two
     Particles p = sized(1000, 20e-6);
-    place_particles(p, c, PlacementConfig{}, 1);
+    place_stratified(p, c, PlacementConfig{}, 1);
     const auto count = per_cell(p, c, 32);
     EXPECT_EQ(std::count(count.begin(), count.end(), 1), 1000);
     EXPECT_EQ(std::count(count.begin(), count.end(), 0), 24);
   }
   {  // 1050 particles in 10 x 10 cells: 10 each, and 50 cells one more
     Particles p = sized(1050, 20e-6);
-    place_particles(p, c, PlacementConfig{10, 0.4}, 2);
+    place_stratified(p, c, PlacementConfig{10, 0.4}, 2);
     const auto count = per_cell(p, c, 10);
     EXPECT_EQ(std::count(count.begin(), count.end(), 10), 50);
     EXPECT_EQ(std::count(count.begin(), count.end(), 11), 50);
@@ -62,7 +62,8 @@ TEST(Placement, EveryCellHoldsItsShare) {
 // random deal would leave rows with none and rows with many).
 TEST(Placement, EverySizeIsSpreadEvenlyOverTheRows) {
   const Scene scene = parse_scene(
-      "[sample]\nsimulated_count = 20000\nsize_count = 3\n[sample.grading]\n"
+      "[sample]\nsimulated_count = 20000\nsize_count = 3\n"
+      "[sample.placement]\nmethod = \"stratified\"\n[sample.grading]\n"
       "diameters_um = [5, 20, 60]\npercent_finer = [0, 50, 100]\n",
       "rows.toml");
   const Sample s = build_sample(scene);
@@ -87,7 +88,7 @@ TEST(Placement, NoOverlapAndInsideTheWallsBottomAndSurface) {
   Particles p;
   p.resize(3000);
   for (std::size_t i = 0; i < p.size(); ++i) p.diameter[i] = (i % 2 == 0 ? 40e-6 : 12e-6);
-  place_particles(p, c, PlacementConfig{}, 3);
+  place_stratified(p, c, PlacementConfig{}, 3);
   EXPECT_GT(area_fraction(p, c), 0.3);
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double r = 0.5 * p.diameter[i];
@@ -104,7 +105,8 @@ TEST(Placement, NoOverlapAndInsideTheWallsBottomAndSurface) {
 }
 
 TEST(Placement, SameSeedSameSampleOtherSeedOtherSample) {
-  const std::string toml = "[sample]\nsimulated_count = 5000\n";
+  const std::string toml =
+      "[sample]\nsimulated_count = 5000\n[sample.placement]\nmethod = \"stratified\"\n";
   const Sample a = build_sample(parse_scene(toml, "a.toml", {"sample.seed=42"}));
   const Sample b = build_sample(parse_scene(toml, "b.toml", {"sample.seed=42"}));
   const Sample c = build_sample(parse_scene(toml, "c.toml", {"sample.seed=43"}));
@@ -144,7 +146,7 @@ TEST(Placement, AMillionParticlesOfRatio28AreQuick) {
   p.resize(1000000);
   for (std::size_t i = 0; i < p.size(); ++i) p.diameter[i] = (i % 20000 == 0 ? 70e-6 : 2.5e-6);
   const auto start = std::chrono::steady_clock::now();
-  place_particles(p, c, PlacementConfig{}, 9);
+  place_stratified(p, c, PlacementConfig{}, 9);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("placed 1e6 particles (area fraction %.3f) in %.2f s\n", area_fraction(p, c),
@@ -163,7 +165,9 @@ TEST(Placement, AMillionParticlesOfRatio28AreQuick) {
 // The paper's cylinder, a log-uniform curve in 220 sizes, 10^6 particles: the whole sample
 // (discretisation, weights, placement) is built in about half a second.
 TEST(Placement, AMillionParticleSampleIsQuick) {
-  const Scene scene = parse_scene("[sample]\nsimulated_count = 1000000\n", "million.toml");
+  const Scene scene = parse_scene(
+      "[sample]\nsimulated_count = 1000000\n[sample.placement]\nmethod = \"stratified\"\n",
+      "million.toml");
   const auto start = std::chrono::steady_clock::now();
   const Sample s = build_sample(scene);
   const double seconds =
