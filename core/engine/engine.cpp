@@ -37,6 +37,7 @@ ForceModel force_model(const Scene& scene, double particle_density) {
   m.drag = f.drag == "off"      ? DragLaw::off
            : f.drag == "stokes" ? DragLaw::stokes
                                 : DragLaw::di_felice;
+  m.voidage_excludes_self = f.voidage_excludes_self;
   m.kn = f.stiffness_normal;
   m.kt = f.stiffness_tangential;
   m.mu = f.friction;

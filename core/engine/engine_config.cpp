@@ -26,6 +26,9 @@ void describe(ForcesConfig& c, Schema& s) {
       .min_exclusive = true;
   s.number("forces.min_voidage", &c.min_voidage, "", 1, 0.01, 1,
            "Floor on the grid's voidage, where statistical weights pack more than a bed.");
+  s.flag("forces.voidage_excludes_self", &c.voidage_excludes_self,
+         "The voidage a grain's drag feels leaves out the grain's own statistical weight, which "
+         "with few heavily weighted particles would pack its cell on its own.");
 }
 
 void describe(IntegratorConfig& c, Schema& s) {

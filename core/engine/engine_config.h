@@ -21,6 +21,7 @@ struct ForcesConfig {
   double lubrication_range = 10;      // the second 10 of Eq. 10
   double voidage_cell = 4e-3;         // m, side of the square cells of the voidage grid
   double min_voidage = 0.3;           // floor on the grid's voidage (a packed bed's ~0.4)
+  bool voidage_excludes_self = true;  // a grain's own weight is not in the voidage it feels
 };
 
 // How Eq. 5 is advanced in time (Sect. 4.6).

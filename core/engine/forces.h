@@ -20,6 +20,7 @@ struct ForceModel {
   // (contact_projection.h) and friction is not represented.
   bool contact_forces = true;
   DragLaw drag = DragLaw::di_felice;
+  bool voidage_excludes_self = true;  // Di Felice: see VoidageGrid::excluding
   double kn = 1e3, kt = 1e3, mu = 0.5;
   double lubrication_intensity = 10, lubrication_range = 10;
   double particle_density = 2500, fluid_density = 1000, viscosity = 1e-3, gravity = 9.81;

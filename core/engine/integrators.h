@@ -13,9 +13,8 @@
 //   that small step, not discovered deep after a large one (the spring would return more energy
 //   than the grain brought): pairs closer than a skin of 0.25 radii count as touching, and the
 //   step keeps every grain from crossing half the smallest skin (0.5 skin r_min / v_max).
-//   The step never exceeds 1.9 m/c of the stiffest drag (the explicit drag's stability bound),
-//   nor step_factor * t_tr with t_tr at the local voidage's drag (hindered grains respond
-//   quicker than in clear water).
+//   The step never exceeds m/c of the stiffest drag felt in the last step (the explicit drag
+//   is stable below 2 m/c; hindered grains respond quicker than in clear water).
 //
 // exponential: the drag is linear in the velocity over a step (Stokes exactly; Di Felice with its
 //   coefficient frozen at the step's start), so m dv/dt = F - c v is solved exactly over the
@@ -50,7 +49,8 @@ namespace sedem {
 struct DragEvaluator {
   const ForceModel* model = nullptr;
   const VoidageGrid* voidage = nullptr;
-  double coefficient(double d, double speed, double x, double y) const;
+  // `weight`: the grain's statistical weight, left out of its voidage if the model says so.
+  double coefficient(double d, double weight, double speed, double x, double y) const;
 };
 
 struct IntegratorContext {

@@ -15,10 +15,12 @@ void VoidageGrid::configure(double cell, double half_width, double height, doubl
   columns_ = std::max(1L, long(std::ceil(2 * half_width / cell)));
   rows_ = std::max(1L, long(std::ceil(height / cell)));
   cell_volume_ = cell * cell * slab_thickness;
+  inverse_volume_ = 1.0 / cell_volume_;
   min_voidage_ = min_voidage;
   threads_ = std::max(1, threads);
   voidage_.assign(std::size_t(columns_ * rows_), 1.0);
   log_voidage_.assign(voidage_.size(), 0.0);
+  solid_.assign(voidage_.size(), 0.0);
   partial_.assign(voidage_.size() * std::size_t(threads_), 0.0);
 }
 
@@ -39,7 +41,8 @@ void VoidageGrid::compute(std::size_t n, const double* x, const double* y, const
   for (std::size_t c = 0; c < cells; ++c) {
     double solid = 0;
     for (int t = 0; t < threads_; ++t) solid += partial_[std::size_t(t) * cells + c];
-    voidage_[c] = std::max(min_voidage_, 1.0 - solid * inv);
+    solid_[c] = solid * inv;
+    voidage_[c] = std::max(min_voidage_, 1.0 - solid_[c]);
     log_voidage_[c] = std::log(voidage_[c]);
   }
 }

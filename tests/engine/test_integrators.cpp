@@ -51,7 +51,7 @@ TEST(ExponentialIntegrator, ConvergesToTheReferenceAsTheStepShrinks) {
   const double scale = stokes::terminal_velocity(60e-6, 2500, ref_scene.fluid) * t;
 
   double previous = 1e9;
-  for (double factor : {50.0, 10.0, 1.0}) {  // 500x, 100x and 10x the paper's step
+  for (double factor : {30.0, 10.0, 1.0}) {  // 300x, 100x and 10x the paper's step
     Scene scene = scene_with("di_felice", "exponential");
     scene.integrator.fast_step_factor = factor;
     Engine fast(scene, sample_of(cloud()));
@@ -155,6 +155,7 @@ TEST(ReferenceIntegrator, StepGrowsAfterTerminalVelocity) {
   const double tau = stokes::relaxation_time(d, 2500, scene.fluid);
   const double first = 0.1 * stokes::response_time(d, 2500, scene.fluid, 0.95);
   engine.advance_to(0.05);
+  engine.step(1.0);  // one unclipped step (advance_to shortens its last one to land on 0.05)
   EXPECT_GT(engine.stats().last_step, 2 * first);
   EXPECT_LT(engine.stats().last_step, 2 * tau);
   const double ut = stokes::terminal_velocity(d, 2500, scene.fluid);

@@ -103,8 +103,23 @@ TEST(EngineDiFelice, DiluteLowReynoldsLimitIs096Stokes) {
   EXPECT_NEAR(-engine.particles().vy[0] * 0.96 / ut, 1.0, 2e-3);
 }
 
-// Equal grains sharing one voidage cell, their statistical weights set for eps = 0.9: each
-// settles at the Di Felice terminal velocity at that voidage, slower than in clear water.
+// A grain alone, standing for so many real ones that its weight alone would make its cell half
+// solids, still settles as in clear water: the voidage it feels is the others'.
+TEST(EngineDiFelice, LoneHeavilyWeightedGrainDoesNotHinderItself) {
+  Scene scene = scene_with("di_felice", "exponential");
+  scene.forces.contact = false;
+  const double d = 10e-6, cell = scene.forces.voidage_cell;
+  const double weight =
+      0.5 * cell * cell * scene.cylinder.slab_thickness() / (std::numbers::pi / 6 * d * d * d);
+  Engine engine(scene, sample_of({{0.5 * cell, 0.2 + 0.5 * cell, d, 0, 0, weight}}));
+  engine.advance_to(0.5);
+  const double ut = drag::di_felice_terminal_velocity(d, 2500, scene.fluid, 1.0);
+  EXPECT_NEAR(-engine.particles().vy[0], ut, 1e-6 * ut);
+}
+
+// Equal grains sharing one voidage cell, their statistical weights set for a cell voidage eps:
+// each settles at the Di Felice terminal velocity at the voidage the other 19 make (its own
+// weight left out), slower the more they pack; with its own weight counted, slower still.
 TEST(EngineDiFelice, DragGrowsWithConcentration) {
   Scene scene = scene_with("di_felice", "exponential");
   scene.forces.contact = false;
@@ -118,12 +133,19 @@ TEST(EngineDiFelice, DragGrowsWithConcentration) {
     for (int k = 0; k < count; ++k)
       grains.push_back({0.2 * cell + k * 0.6 * cell / count, 0.4 * cell + 0.2, d, 0, 0,
                         (1 - eps) * cell_volume / (count * grain)});
-    Engine engine(scene, sample_of(grains));
     // Several steps: each takes its drag coefficient at the speed the previous one reached.
+    Engine engine(scene, sample_of(grains));
     engine.advance_to(0.5);
-    const double expected = drag::di_felice_terminal_velocity(d, 2500, scene.fluid, eps);
+    const double others = 1 - (1 - eps) * (count - 1) / count;
+    const double expected = drag::di_felice_terminal_velocity(d, 2500, scene.fluid, others);
     const double u = -engine.particles().vy[count / 2];
     EXPECT_NEAR(u, expected, 1e-6 * expected) << eps;
+    Scene counted = scene;
+    counted.forces.voidage_excludes_self = false;
+    Engine self(counted, sample_of(grains));
+    self.advance_to(0.5);
+    const double whole = drag::di_felice_terminal_velocity(d, 2500, scene.fluid, eps);
+    EXPECT_NEAR(-self.particles().vy[count / 2], whole, 1e-6 * whole) << eps;
     if (previous > 0) {
       EXPECT_LT(u, previous) << eps;
     }
