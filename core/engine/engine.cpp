@@ -114,7 +114,8 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
     model_.contact_forces = false;  // the exponential integrator projects contacts
 
   state_.resize(n);
-  forces_.resize(n);
+  pass_needed_ = needs_force_pass(model_);
+  if (pass_needed_) forces_.resize(n);
   search_.resize(n);
   double dmin = 0, dmax = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -160,10 +161,12 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
   integrator_ = make_integrator(scene_.integrator, ctx);
   freeze_height_ =
       scene_.integrator.freeze_settled && model_.contact ? lowest_measured_height(scene_) : 0.0;
+  // Without the force pass, the freeze check reads the contacts the projection marks.
+  if (!pass_needed_ && freeze_height_ > 0) forces_.stiffness.resize(n);
   // A first look at the contacts, so that the first step is chosen knowing them.
   if (n > 0) {
     rebuild_lists();
-    pass_.run(state_, grid_, springs_, next_springs_, 0.0, forces_, facts_);
+    if (pass_needed_) pass_.run(state_, grid_, springs_, next_springs_, 0.0, forces_, facts_);
     next_springs_ = PairHistory{};
   }
 }
@@ -212,15 +215,18 @@ void Engine::step(double limit) {
     }
     rebuild_lists();
   }
-  pass_.run(state_, grid_, springs_, next_springs_, dt, forces_, facts_);
-  if (facts_.blowup.found) {
-    const auto& b = facts_.blowup;
-    throw InstabilityError(sample_.particles.id[b.particle], time_, b.quantity, b.value);
+  if (pass_needed_) {
+    pass_.run(state_, grid_, springs_, next_springs_, dt, forces_, facts_);
+    if (facts_.blowup.found) {
+      const auto& b = facts_.blowup;
+      throw InstabilityError(sample_.particles.id[b.particle], time_, b.quantity, b.value);
+    }
+    if (model_.friction) std::swap(springs_, next_springs_);
   }
-  if (model_.friction) std::swap(springs_, next_springs_);
 
   Blowup blowup;
   integrator_->advance(state_, forces_, dt, blowup);
+  if (!pass_needed_) integrator_->contact_facts(facts_);
   time_ = last ? limit : time_ + dt;
   stats_.steps += 1;
   stats_.particle_steps += double(n - stats_.frozen);
@@ -230,6 +236,8 @@ void Engine::step(double limit) {
   if (blowup.found)
     throw InstabilityError(sample_.particles.id[blowup.particle], time_, blowup.quantity,
                            blowup.value);
+  if (!pass_needed_ && freeze_height_ > 0 && stats_.steps % 64 == 0)
+    integrator_->mark_touching(forces_.stiffness);
   if (freeze_height_ > 0 && stats_.steps % 64 == 0) freeze_resting();
   lists_stale_ = moved_beyond_margin();
 }

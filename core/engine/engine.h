@@ -86,6 +86,7 @@ class Engine {
   std::vector<double> search_;   // search radius: radius + lubrication reach + skins + margin
   std::vector<double> x0_, y0_;  // positions when the candidate lists were built
   bool lists_stale_ = true;
+  bool pass_needed_ = true;  // see needs_force_pass
   std::int64_t resorted_at_ = 0;
   std::vector<double> scratch_;
   std::vector<std::uint32_t> scratch_index_;

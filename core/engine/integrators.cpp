@@ -194,59 +194,61 @@ class ExponentialIntegrator final : public Integrator {
   void advance(EngineState& s, const ForceAccumulators& f, double dt, Blowup& blowup) override {
     const ForceModel& m = *ctx_.model;
     const bool project = m.contact && !m.contact_forces && ctx_.grid && ctx_.pass;
-    if (project) {
-      mobility_.resize(s.size());
-      response_.resize(s.size());
-    }
+    // Without the force pass a free particle feels only weight, buoyancy and drag.
+    const bool pass_forces = needs_force_pass(m);
+    if (project) drag_.resize(s.size());
     // Free update: the forces of the pass (no contact force when contacts are projected), the
     // lubrication's stiffness folded into the damping.
-    integrate(ctx_.threads, s.size(), sums_, [&](std::size_t i, ThreadSums&) {
-      if (s.frozen[i]) {
-        if (project) mobility_[i] = response_[i] = 0;
-        return;
-      }
-      const double d = s.diameter[i];
-      const double mass = m.mass(d);
-      const double vx = s.vx[i], vy = s.vy[i];
-      const double c = ctx_.drag.coefficient(d, std::sqrt(vx * vx + vy * vy), s.x[i], s.y[i]) +
-                       f.lubrication_stiffness[i] * dt;
-      if (c > 0) {
-        const double rate = c / mass, a = dt * rate;
-        // decay - 1 from one call; past 40 response times it is -1 to round-off.
-        const double lost = a > 40 ? -1.0 : std::expm1(-a);
-        const double decay = 1.0 + lost;
-        const double relax = -lost / rate;                // integral of the decay over dt
-        const double ux = f.fx[i] / c, uy = f.fy[i] / c;  // velocity the step tends to
-        s.x[i] += ux * dt + (vx - ux) * relax;
-        s.y[i] += uy * dt + (vy - uy) * relax;
-        s.vx[i] = ux + (vx - ux) * decay;
-        s.vy[i] = uy + (vy - uy) * decay;
-        if (project) {
-          // A constant force F over the step moves the particle by F (a + lost) / (rate c)
-          // and changes its velocity by -F lost / c. a + lost = a^2/2 - a^3/6 + ... cancels
-          // for small a: its series there.
-          const double drift = a < 1e-3 ? a * a * (0.5 - a * (1.0 / 6 - a / 24)) : a + lost;
-          mobility_[i] = drift / (rate * c);
-          response_[i] = -lost * rate / drift;
-        }
-      } else {
-        const double ax = f.fx[i] / mass, ay = f.fy[i] / mass;
-        s.x[i] += dt * (vx + 0.5 * dt * ax);
-        s.y[i] += dt * (vy + 0.5 * dt * ay);
-        s.vx[i] += dt * ax;
-        s.vy[i] += dt * ay;
-        if (project) {
-          mobility_[i] = 0.5 * dt * dt / mass;
-          response_[i] = 2.0 / dt;
-        }
-      }
-    });
-    if (project && dt > 0) projection_.run(s, *ctx_.grid, *ctx_.pass, mobility_, response_);
     const ThreadSums sums =
         integrate(ctx_.threads, s.size(), sums_, [&](std::size_t i, ThreadSums& t) {
-          if (!s.frozen[i]) check(s, i, ctx_.runaway_speed, t.blowup);
+          if (s.frozen[i]) return;
+          const double d = s.diameter[i];
+          const double mass = m.mass(d);
+          const double vx = s.vx[i], vy = s.vy[i];
+          double c = ctx_.drag.coefficient(d, std::sqrt(vx * vx + vy * vy), s.x[i], s.y[i]);
+          if (pass_forces) c += f.lubrication_stiffness[i] * dt;
+          const double fx = pass_forces ? f.fx[i] : 0.0;
+          const double fy = pass_forces ? f.fy[i] : m.gravity_force(d);
+          if (project) drag_[i] = c;
+          if (c > 0) {
+            const double rate = c / mass, a = dt * rate;
+            // decay - 1 from one call; past 40 response times it is -1 to round-off.
+            const double lost = a > 40 ? -1.0 : std::expm1(-a);
+            const double decay = 1.0 + lost;
+            const double relax = -lost / rate;      // integral of the decay over dt
+            const double ux = fx / c, uy = fy / c;  // velocity the step tends to
+            s.x[i] += ux * dt + (vx - ux) * relax;
+            s.y[i] += uy * dt + (vy - uy) * relax;
+            s.vx[i] = ux + (vx - ux) * decay;
+            s.vy[i] = uy + (vy - uy) * decay;
+          } else {
+            const double ax = fx / mass, ay = fy / mass;
+            s.x[i] += dt * (vx + 0.5 * dt * ax);
+            s.y[i] += dt * (vy + 0.5 * dt * ay);
+            s.vx[i] += dt * ax;
+            s.vy[i] += dt * ay;
+          }
+          check(s, i, ctx_.runaway_speed, t.blowup);
         });
     if (sums.blowup.found && !blowup.found) blowup = sums.blowup;
+    facts_ = ProjectionFacts{};
+    if (project && dt > 0) {
+      facts_ = projection_.run(s, *ctx_.grid, *ctx_.pass, drag_, dt);
+      if (facts_.blowup.found && !blowup.found) blowup = facts_.blowup;
+      Blowup moved;
+      for (std::uint32_t p : projection_.participants())
+        if (!s.frozen[p]) check(s, p, ctx_.runaway_speed, moved);
+      if (moved.found && !blowup.found) blowup = moved;
+    }
+  }
+
+  void contact_facts(PassFacts& facts) const override {
+    facts.contacts = facts_.touching;
+    facts.max_overlap_ratio = facts_.max_overlap_ratio;
+    facts.min_contact_mass = 0;
+  }
+  void mark_touching(std::vector<double>& touching) const override {
+    projection_.mark_touching(touching);
   }
 
   void save(std::ostream& out) const override {
@@ -257,16 +259,15 @@ class ExponentialIntegrator final : public Integrator {
     in.read(reinterpret_cast<char*>(&step_), 8);
     projection_.load(in);
   }
-  std::size_t bytes() const override {
-    return projection_.bytes() + (mobility_.capacity() + response_.capacity()) * 8;
-  }
+  std::size_t bytes() const override { return projection_.bytes() + drag_.capacity() * 8; }
 
  private:
   IntegratorConfig config_;
   IntegratorContext ctx_;
   std::vector<ThreadSums> sums_;
   ContactProjection projection_;
-  std::vector<double> mobility_, response_;  // per particle, this step (see advance)
+  std::vector<double> drag_;  // per particle: its drag coefficient over this step
+  ProjectionFacts facts_;
   double step_ = 0;
 };
 

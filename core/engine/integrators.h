@@ -26,9 +26,11 @@
 //   at most r_min / u_max so that no grain passes through another between two steps (u_max:
 //   the largest grain's clear-water settling speed). docs/engine.md has the details.
 
+#include <algorithm>
 #include <cstdint>
 #include <iosfwd>
 #include <memory>
+#include <vector>
 
 #include "core/engine/engine_config.h"
 #include "core/engine/engine_state.h"
@@ -72,6 +74,12 @@ class Integrator {
   virtual void save(std::ostream& out) const = 0;
   virtual void load(std::istream& in) = 0;
   virtual std::size_t bytes() const { return 0; }  // working memory
+  // When the force pass did not run (see needs_force_pass): the contacts the last advance
+  // found, into `facts`, and touching[i] > 0 for every particle then in contact.
+  virtual void contact_facts(PassFacts&) const {}
+  virtual void mark_touching(std::vector<double>& touching) const {
+    std::fill(touching.begin(), touching.end(), 0.0);
+  }
 };
 
 std::unique_ptr<Integrator> make_integrator(const IntegratorConfig& config,
