@@ -15,8 +15,9 @@ constexpr double kTolerance = 1e-3;
 // Pairs and walls closer than this many smaller radii join the constraints even if they do not
 // touch yet at the free positions: the sweeps may push them into contact.
 constexpr double kSkin = 0.5;
-// Below this many constraints or participants a sweep runs on one thread.
-constexpr std::size_t kParallelFrom = 4096;
+// Below this many constraints a sweep runs on one thread: its two barriers cost more than the
+// ~10 ns per constraint it shares, the more so on a loaded machine.
+constexpr std::size_t kParallelFrom = std::size_t(1) << 15;
 
 }  // namespace
 
@@ -25,7 +26,6 @@ void ContactProjection::configure(const ForceModel& model, int threads, int swee
   threads_ = std::max(1, threads);
   sweeps_ = std::max(1, sweeps);
   found_.resize(std::size_t(threads_));
-  blowups_.resize(std::size_t(threads_));
 }
 
 std::size_t ContactProjection::bytes() const {
@@ -85,9 +85,7 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
   {
     const std::size_t t = std::size_t(omp_get_thread_num());
     auto& found = found_[t];
-    Blowup& blowup = blowups_[t];
     found.clear();
-    blowup = Blowup{};
 #pragma omp for schedule(static)
     for (std::size_t k = 0; k < n; ++k) {
       const std::uint32_t i = order[k];
@@ -97,7 +95,6 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
       if (!frozen[i]) {
         const double left = -hw - (x[i] - ri), right = x[i] + ri - hw, bottom = ri - y[i];
         const double side = std::max(left, right);
-        if (std::max(side, bottom) > ri) blowup.note(oi, "wall overlap", std::max(side, bottom));
         const double side_force = held_i ? warm_.find(PairHistory::key(oi, kSide)) : 0.0;
         const double floor_force = held_i ? warm_.find(PairHistory::key(oi, kFloor)) : 0.0;
         if (side > -kSkin * ri || side_force > 0)
@@ -115,11 +112,7 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
         const double near = reach + kSkin * rmin;
         const double force =
             held_i && held[origin[j]] ? warm_.find(PairHistory::key(oi, origin[j])) : 0.0;
-        if (dist2 < near * near || force > 0) {
-          const double overlap = reach - std::sqrt(dist2);
-          if (overlap > 2 * rmin) blowup.note(oi, "overlap", overlap);
-          found.push_back({i, j, 0, 0, force, 0, 0, false});
-        }
+        if (dist2 < near * near || force > 0) found.push_back({i, j, 0, 0, force, 0, 0, false});
       }
     }
   }
@@ -193,63 +186,63 @@ double ContactProjection::sweep(EngineState& s, Mode mode) {
   };
   const std::size_t constraints = constraints_.size(), slots = particle_.size();
   double worst = 0;
-#pragma omp parallel for num_threads(threads_) if (threads_ > 1 && constraints >= kParallelFrom) \
-    schedule(static) reduction(max                                                               \
-                               : worst)
-  for (std::size_t k = 0; k < constraints; ++k) {
-    Constraint& c = constraints_[k];
-    const std::uint32_t a = c.a;
-    const double ra = 0.5 * d[a];
-    const double share_a = mobility_[c.slot_a] * std::max<std::uint32_t>(count_[c.slot_a], 1);
-    c.mx = c.my = 0;
-    if (c.b >= kSide) {
-      double overlap = ra - y[a], direction = 0;
-      if (c.b == kSide) {
-        const double left = -hw - (x[a] - ra), right = x[a] + ra - hw;
-        overlap = std::max(left, right);
-        direction = left > right ? 1.0 : -1.0;
+#pragma omp parallel num_threads(threads_) if (threads_ > 1 && constraints >= kParallelFrom)
+  {
+#pragma omp for schedule(static) reduction(max : worst)
+    for (std::size_t k = 0; k < constraints; ++k) {
+      Constraint& c = constraints_[k];
+      const std::uint32_t a = c.a;
+      const double ra = 0.5 * d[a];
+      const double share_a = mobility_[c.slot_a] * std::max<std::uint32_t>(count_[c.slot_a], 1);
+      c.mx = c.my = 0;
+      if (c.b >= kSide) {
+        double overlap = ra - y[a], direction = 0;
+        if (c.b == kSide) {
+          const double left = -hw - (x[a] - ra), right = x[a] + ra - hw;
+          overlap = std::max(left, right);
+          direction = left > right ? 1.0 : -1.0;
+        }
+        c.active = overlap > 0 || c.lambda > 0;
+        if (starting || !c.active) continue;
+        worst = std::max(worst, (overlap - c.lambda * compliance) / ra);
+        const double f = change(c.lambda, overlap, share_a + compliance);
+        (c.b == kSide ? c.mx : c.my) = c.b == kSide ? direction * f : f;
+        continue;
       }
-      c.active = overlap > 0 || c.lambda > 0;
+      const std::uint32_t b = c.b;
+      const double dx = x[b] - x[a], dy = y[b] - y[a];
+      const double dist2 = dx * dx + dy * dy;
+      const double rb = 0.5 * d[b], reach = ra + rb;
+      c.active = (dist2 < reach * reach || c.lambda != 0) && dist2 != 0;
       if (starting || !c.active) continue;
-      worst = std::max(worst, (overlap - c.lambda * compliance) / ra);
-      const double f = change(c.lambda, overlap, share_a + compliance);
-      (c.b == kSide ? c.mx : c.my) = c.b == kSide ? direction * f : f;
-      continue;
+      const double share_b = mobility_[c.slot_b] * std::max<std::uint32_t>(count_[c.slot_b], 1);
+      const double dist = std::sqrt(dist2);
+      worst = std::max(worst, (reach - dist - c.lambda * compliance) / std::min(ra, rb));
+      const double u = change(c.lambda, reach - dist, share_a + share_b + compliance) / dist;
+      c.mx = -u * dx;
+      c.my = -u * dy;
     }
-    const std::uint32_t b = c.b;
-    const double dx = x[b] - x[a], dy = y[b] - y[a];
-    const double dist2 = dx * dx + dy * dy;
-    const double rb = 0.5 * d[b], reach = ra + rb;
-    c.active = (dist2 < reach * reach || c.lambda != 0) && dist2 != 0;
-    if (starting || !c.active) continue;
-    const double share_b = mobility_[c.slot_b] * std::max<std::uint32_t>(count_[c.slot_b], 1);
-    const double dist = std::sqrt(dist2);
-    worst = std::max(worst, (reach - dist - c.lambda * compliance) / std::min(ra, rb));
-    const double u = change(c.lambda, reach - dist, share_a + share_b + compliance) / dist;
-    c.mx = -u * dx;
-    c.my = -u * dy;
-  }
-#pragma omp parallel for num_threads(threads_) if (threads_ > 1 && slots >= kParallelFrom) \
-    schedule(static)
-  for (std::size_t k = 0; k < slots; ++k) {
-    const double w = mobility_[k];
-    double dx = 0, dy = 0;
-    std::uint32_t count = 0;
-    for (std::uint32_t e = first_[k]; e < first_[k + 1]; ++e) {
-      const Incidence in = incidences_[e];
-      const Constraint& c = constraints_[in.constraint];
-      count += c.active;
-      const double wk = in.is_b ? -w : w;
-      dx += wk * c.mx;
-      dy += wk * c.my;
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < slots; ++k) {
+      const double w = mobility_[k];
+      double dx = 0, dy = 0;
+      std::uint32_t count = 0;
+      for (std::uint32_t e = first_[k]; e < first_[k + 1]; ++e) {
+        const Incidence in = incidences_[e];
+        const Constraint& c = constraints_[in.constraint];
+        count += c.active;
+        const double wk = in.is_b ? -w : w;
+        dx += wk * c.mx;
+        dy += wk * c.my;
+      }
+      count_[k] = count;
+      if (starting) continue;
+      const std::uint32_t p = particle_[k];
+      x[p] += dx;
+      y[p] += dy;
+      moved_x_[k] += dx;
+      moved_y_[k] += dy;
     }
-    count_[k] = count;
-    if (starting) continue;
-    const std::uint32_t p = particle_[k];
-    x[p] += dx;
-    y[p] += dy;
-    moved_x_[k] += dx;
-    moved_y_[k] += dy;
   }
   return worst;
 }
@@ -297,8 +290,6 @@ ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid
   }
   ProjectionFacts facts;
   collect(s, grid, pass);
-  for (const Blowup& b : blowups_)
-    if (b.found && !facts.blowup.found) facts.blowup = b;
   index_participants(s, drag, dt);
   sweep(s, Mode::start);
   for (std::uint32_t c : count_) facts.touching += c > 0;
@@ -322,17 +313,20 @@ ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid
       s.vy[p] += response_[k] * moved_y_[k];
     }
     const double hw = model_.half_width;
+    // The overlaps left: the worst, and any deeper than a radius into a wall or than the
+    // smaller diameter between two grains (a blow-up).
     for (const Constraint& c : constraints_) {
       const double ra = 0.5 * d[c.a];
-      double ratio = 0;
-      if (c.b == kSide)
-        ratio = (std::abs(s.x[c.a]) + ra - hw) / ra;
-      else if (c.b == kFloor)
-        ratio = (ra - s.y[c.a]) / ra;
-      else
-        ratio = (ra + 0.5 * d[c.b] - std::hypot(s.x[c.b] - s.x[c.a], s.y[c.b] - s.y[c.a])) /
-                std::min(ra, 0.5 * d[c.b]);
-      facts.max_overlap_ratio = std::max(facts.max_overlap_ratio, ratio);
+      if (c.b >= kSide) {
+        const double overlap = c.b == kSide ? std::abs(s.x[c.a]) + ra - hw : ra - s.y[c.a];
+        if (overlap > ra) facts.blowup.note(s.origin[c.a], "wall overlap", overlap);
+        facts.max_overlap_ratio = std::max(facts.max_overlap_ratio, overlap / ra);
+      } else {
+        const double rb = 0.5 * d[c.b], rmin = std::min(ra, rb);
+        const double overlap = ra + rb - std::hypot(s.x[c.b] - s.x[c.a], s.y[c.b] - s.y[c.a]);
+        if (overlap > 2 * rmin) facts.blowup.note(s.origin[c.a], "overlap", overlap);
+        facts.max_overlap_ratio = std::max(facts.max_overlap_ratio, overlap / rmin);
+      }
     }
   }
   for (std::uint32_t p : particle_) slot_of_[p] = kNone;

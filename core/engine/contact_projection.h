@@ -107,7 +107,6 @@ class ContactProjection {
   ForceModel model_;
   int threads_ = 1, sweeps_ = 32;
   std::vector<std::vector<Constraint>> found_;  // per thread, at collection
-  std::vector<Blowup> blowups_;                 // per thread, at collection
   std::vector<Constraint> constraints_;
   std::vector<Incidence> incidences_;  // grouped by participant, in constraint order
   // Per participant: engine index, mobility, response, contact counts, first incidence,

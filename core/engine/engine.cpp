@@ -249,24 +249,41 @@ void Engine::rebuild_lists() {
   grid_.build(n, x0_.data(), y0_.data(), search_.data());
   pass_.build_lists(grid_, n, x0_.data(), y0_.data(), search_.data());
   lists_stale_ = false;
+  ++stats_.list_builds;
 }
 
 // A pair's distance shrinks by at most the sum of both moves; the lists hold every pair within
-// the interaction range plus kListMargin (r_i + r_j), so they stay complete while every
-// particle has moved less than half its own margin.
-bool Engine::moved_beyond_margin() const {
+// the interaction range plus kListMargin (r_i + r_j), so they stay complete while
+// move_i + move_j < kListMargin (r_i + r_j) for every pair, i.e. while the two largest excesses
+// e = move - kListMargin r (1% kept in reserve) sum to less than zero. A small grain carried
+// along by a large one thus uses the margin of its partners too, not its own margin alone.
+bool Engine::moved_beyond_margin() {
   const std::size_t n = state_.size();
   const double* x = state_.x.data();
   const double* y = state_.y.data();
   const double* d = state_.diameter.data();
-  int moved = 0;
-#pragma omp parallel for num_threads(threads_) if (threads_ > 1) reduction(| : moved)
-  for (std::size_t i = 0; i < n; ++i) {
-    const double dx = x[i] - x0_[i], dy = y[i] - y0_[i];
-    const double allowed = 0.25 * kListMargin * d[i];  // half the margin of radius r = d/2
-    moved |= int(dx * dx + dy * dy > allowed * allowed);
+  const double share = 0.99 * 0.5 * kListMargin;
+  const int threads = threads_;
+  std::vector<double>& top = top_excess_;
+  top.assign(2 * std::size_t(threads), -HUGE_VAL);  // no allocation after the first step
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+    double first = -HUGE_VAL, second = -HUGE_VAL;
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      const double dx = x[i] - x0_[i], dy = y[i] - y0_[i];
+      const double excess = std::sqrt(dx * dx + dy * dy) - share * d[i];
+      if (excess > second) {
+        second = std::max(std::min(first, excess), second);
+        first = std::max(first, excess);
+      }
+    }
+    const std::size_t t = std::size_t(omp_get_thread_num());
+    top[2 * t] = first;
+    top[2 * t + 1] = second;
   }
-  return moved != 0;
+  std::sort(top.begin(), top.end());
+  return n > 1 && top[top.size() - 1] + top[top.size() - 2] >= 0;
 }
 
 // A particle is at rest when it touches something and moves at less than 1e-3 of its
