@@ -97,7 +97,7 @@ constexpr char kMagic[8] = {'S', 'E', 'D', 'E', 'M', 'C', 'K', '1'};
 }  // namespace
 
 // The margin of the candidate lists, in radii.
-constexpr double kListMargin = 2.0;
+constexpr double kListMargin = 3.0;
 
 namespace {}  // namespace
 
