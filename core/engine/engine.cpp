@@ -146,7 +146,7 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
   const Fluid& fluid = scene_.fluid;
   IntegratorContext ctx;
   ctx.model = &model_;
-  ctx.drag = DragEvaluator{&model_, &voidage_};
+  ctx.drag = DragEvaluator{&model_, &voidage_, di_felice_tail_re(scene_.forces.min_voidage)};
   ctx.threads = threads_;
   ctx.min_response_time = stokes::response_time(dmin, model_.particle_density, fluid, 0.95);
   ctx.min_terminal_speed = stokes::terminal_velocity(dmin, model_.particle_density, fluid);

@@ -45,8 +45,13 @@ namespace sedem {
 struct DragEvaluator {
   const ForceModel* model = nullptr;
   const VoidageGrid* voidage = nullptr;
+  double tail_re = 0;  // below it the Di Felice exponent's Re term is lost to round-off
   double coefficient(double d, double speed, double x, double y) const;
 };
+
+// The Reynolds number below which 0.65 exp(-(1.5 - log10 Re)^2 / 2) |ln eps| < 2^-54 for every
+// voidage down to `min_voidage`, with a margin.
+double di_felice_tail_re(double min_voidage);
 
 struct IntegratorContext {
   const ForceModel* model = nullptr;

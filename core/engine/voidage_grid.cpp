@@ -19,6 +19,7 @@ void VoidageGrid::configure(double cell, double half_width, double height, doubl
   threads_ = std::max(1, threads);
   voidage_.assign(std::size_t(columns_ * rows_), 1.0);
   log_voidage_.assign(voidage_.size(), 0.0);
+  hindrance_.assign(voidage_.size(), 1.0);
   partial_.assign(voidage_.size() * std::size_t(threads_), 0.0);
 }
 
@@ -41,6 +42,7 @@ void VoidageGrid::compute(std::size_t n, const double* x, const double* y, const
     for (int t = 0; t < threads_; ++t) solid += partial_[std::size_t(t) * cells + c];
     voidage_[c] = std::max(min_voidage_, 1.0 - solid * inv);
     log_voidage_[c] = std::log(voidage_[c]);
+    hindrance_[c] = std::exp(-1.7 * log_voidage_[c]);
   }
 }
 

@@ -20,8 +20,14 @@ class VoidageGrid {
   double at(double x, double y) const { return voidage_[cell_of(x, y)]; }
   // ln(eps) of the cell at (x, y), kept alongside so that eps^a costs one exp.
   double log_at(double x, double y) const { return log_voidage_[cell_of(x, y)]; }
+  // The same by cell index, and eps^-1.7 (the Di Felice drag's factor at low Re), per cell.
+  std::size_t cell(double x, double y) const { return cell_of(x, y); }
+  double voidage(std::size_t c) const { return voidage_[c]; }
+  double log_voidage(std::size_t c) const { return log_voidage_[c]; }
+  double hindrance(std::size_t c) const { return hindrance_[c]; }
+  double min_voidage() const { return min_voidage_; }
   std::size_t cell_count() const { return voidage_.size(); }
-  std::size_t bytes() const { return (2 * voidage_.size() + partial_.size()) * sizeof(double); }
+  std::size_t bytes() const { return (3 * voidage_.size() + partial_.size()) * sizeof(double); }
 
  private:
   std::size_t cell_of(double x, double y) const {
@@ -33,7 +39,7 @@ class VoidageGrid {
   double inverse_cell_ = 1, half_width_ = 0, cell_volume_ = 1, min_voidage_ = 0;
   long columns_ = 1, rows_ = 1;
   int threads_ = 1;
-  std::vector<double> voidage_, log_voidage_, partial_;
+  std::vector<double> voidage_, log_voidage_, hindrance_, partial_;
 };
 
 }  // namespace sedem
