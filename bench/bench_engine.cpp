@@ -1,6 +1,7 @@
 // sedem_bench_engine: throughput and stability of the DEM engine.
 //
 //   sedem_bench_engine [--out DIR] [--huge] [--quick] [--throughput-only]
+//                      [--cases dilute,bed] [--counts 1000,1000000] [--particle-steps N]
 //
 // Prints its figures and writes DIR/engine_throughput.csv and DIR/engine_stability.csv.
 //  - throughput: particle-steps per second against particle count (1e3 ... 1e6; 1e7 with
@@ -16,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -150,6 +152,15 @@ Scene base_scene(const std::string& method, int threads = 0) {
 int main(int argc, char** argv) {
   std::string out = ".";
   bool huge = false, quick = false, throughput_only = false;
+  std::vector<std::string> cases{"dilute", "bed"};
+  std::vector<std::size_t> chosen_counts;
+  double target = 6e7;  // particle-steps per measurement (spans list rebuilds)
+  auto split = [](const std::string& list) {
+    std::vector<std::string> items;
+    std::stringstream in(list);
+    for (std::string item; std::getline(in, item, ',');) items.push_back(item);
+    return items;
+  };
   for (int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
     if (arg == "--out" && a + 1 < argc)
@@ -160,8 +171,16 @@ int main(int argc, char** argv) {
       quick = true;
     else if (arg == "--throughput-only")
       throughput_only = true;
+    else if (arg == "--cases" && a + 1 < argc)
+      cases = split(argv[++a]);
+    else if (arg == "--particle-steps" && a + 1 < argc)
+      target = std::stod(argv[++a]);
+    else if (arg == "--counts" && a + 1 < argc)
+      for (const std::string& c : split(argv[++a])) chosen_counts.push_back(std::stoul(c));
     else {
-      std::fprintf(stderr, "usage: %s [--out DIR] [--huge] [--quick] [--throughput-only]\n",
+      std::fprintf(stderr,
+                   "usage: %s [--out DIR] [--huge] [--quick] [--throughput-only] "
+                   "[--cases dilute,bed] [--counts N,...] [--particle-steps N]\n",
                    argv[0]);
       return 2;
     }
@@ -170,20 +189,21 @@ int main(int argc, char** argv) {
 
   // Throughput.
   std::ofstream tcsv(out + "/engine_throughput.csv");
-  tcsv << "case,particles,threads,step_s,steps,wall_s,particle_steps_per_s,bytes_per_particle\n";
-  std::printf("%-8s %10s %8s %10s %8s %14s %10s\n", "case", "particles", "threads", "step_s",
-              "steps", "psteps/s", "B/particle");
+  tcsv << "case,particles,threads,step_s,steps,list_builds,wall_s,particle_steps_per_s,"
+          "bytes_per_particle\n";
+  std::printf("%-8s %10s %8s %10s %8s %8s %14s %10s\n", "case", "particles", "threads", "step_s",
+              "steps", "rebuilds", "psteps/s", "B/particle");
   std::vector<std::size_t> counts{1000, 10000, 100000, 1000000};
   if (quick) counts = {1000, 10000, 100000};
   if (huge) counts.push_back(10000000);
-  for (const char* kind : {"dilute", "bed"}) {
+  if (!chosen_counts.empty()) counts = chosen_counts;
+  for (const std::string& kind : cases) {
     for (std::size_t n : counts) {
       Scene scene = base_scene("exponential");
-      Sample sample = std::string(kind) == "dilute" ? dilute(scene, n, 2.5e-6, 70e-6, 1)
-                                                    : bed(scene, n, 10e-6, 1, 1);
+      Sample sample =
+          kind == "dilute" ? dilute(scene, n, 2.5e-6, 70e-6, 1) : bed(scene, n, 10e-6, 1, 1);
       Engine engine(scene, std::move(sample));
-      engine.step(1e9);           // warm-up: first-touch of every buffer
-      const double target = 6e7;  // particle-steps per measurement (spans list rebuilds)
+      engine.step(1e9);  // warm-up: first-touch of every buffer
       const auto steps = std::max<std::int64_t>(3, std::int64_t(target / double(n)));
       const auto before = engine.stats();
       const auto t0 = Clock::now();
@@ -191,10 +211,12 @@ int main(int argc, char** argv) {
       const double wall = seconds_since(t0);
       const double ps = (engine.stats().particle_steps - before.particle_steps) / wall;
       const double bpp = double(engine.bytes()) / double(n);
-      std::printf("%-8s %10zu %8d %10.3g %8lld %14.4g %10.1f\n", kind, n, engine.threads(),
-                  engine.stats().last_step, static_cast<long long>(steps), ps, bpp);
+      const auto builds = engine.stats().list_builds - before.list_builds;
+      std::printf("%-8s %10zu %8d %10.3g %8lld %8lld %14.4g %10.1f\n", kind.c_str(), n,
+                  engine.threads(), engine.stats().last_step, static_cast<long long>(steps),
+                  static_cast<long long>(builds), ps, bpp);
       tcsv << kind << ',' << n << ',' << engine.threads() << ',' << engine.stats().last_step << ','
-           << steps << ',' << wall << ',' << ps << ',' << bpp << '\n';
+           << steps << ',' << builds << ',' << wall << ',' << ps << ',' << bpp << '\n';
       std::fflush(stdout);
     }
   }

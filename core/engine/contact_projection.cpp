@@ -9,24 +9,33 @@
 
 namespace sedem {
 
+namespace {
+
+constexpr double kTolerance = 1e-3;
+// Pairs and walls closer than this many smaller radii join the constraints even if they do not
+// touch yet at the free positions: the sweeps may push them into contact.
+constexpr double kSkin = 0.5;
+// Below this many constraints a sweep runs on one thread: its two barriers cost more than the
+// ~10 ns per constraint it shares, the more so on a loaded machine.
+constexpr std::size_t kParallelFrom = std::size_t(1) << 15;
+
+}  // namespace
+
 void ContactProjection::configure(const ForceModel& model, int threads, int sweeps) {
   model_ = model;
   threads_ = std::max(1, threads);
   sweeps_ = std::max(1, sweeps);
-  reactions_.resize(std::size_t(threads_));
-  worst_.resize(std::size_t(threads_));
-  kept_.resize(std::size_t(threads_));
-  touching_.resize(std::size_t(threads_));
+  found_.resize(std::size_t(threads_));
 }
 
 std::size_t ContactProjection::bytes() const {
   std::size_t b = 0;
-  for (const auto* v :
-       {&moved_x_, &moved_y_, &dx_, &dy_, &pair_force_, &side_force_, &floor_force_})
-    b += v->capacity() * 8;
-  b += (count_.capacity() + next_count_.capacity()) * 4;
-  for (const auto& r : reactions_) b += r.capacity() * sizeof(Reaction);
-  for (const auto& r : kept_) b += r.capacity() * sizeof(PairHistory::Entry);
+  for (const auto& f : found_) b += f.capacity() * sizeof(Constraint);
+  b += constraints_.capacity() * sizeof(Constraint) + incidences_.capacity() * sizeof(Incidence);
+  for (const auto* v : {&particle_, &count_, &first_, &slot_of_, &held_list_})
+    b += v->capacity() * 4;
+  for (const auto* v : {&mobility_, &response_, &moved_x_, &moved_y_}) b += v->capacity() * 8;
+  b += held_.capacity() + kept_.capacity() * sizeof(PairHistory::Entry);
   return b + warm_.bytes();
 }
 
@@ -49,190 +58,279 @@ void ContactProjection::load(std::istream& in) {
     in.read(reinterpret_cast<char*>(&e.spring), 8);
   }
   warm_.assign(&entries, 1);
+  held_.clear();  // rebuilt from warm_ at the next run
+  held_list_.clear();
+  particle_.clear();
 }
 
-namespace {
-
-constexpr double kTolerance = 1e-3;
-constexpr std::uint32_t kWall = 0xFFFFFFFE, kFloor = 0xFFFFFFFF;  // partners in warm_
-
-}  // namespace
-
-std::size_t ContactProjection::sweep(const EngineState& s, const NeighbourGrid& grid,
-                                     const ForcePass& pass, const std::vector<double>& mobility,
-                                     Mode mode) {
+// The constraints at the free positions, in the grid's order of their first particle: walls,
+// then pairs (a same-level pair from its lower sample index, a cross-level pair from its finer
+// side, which alone holds it in its list).
+void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
+                                const ForcePass& pass) {
   const std::size_t n = s.size();
   const double* x = s.x.data();
   const double* y = s.y.data();
   const double* d = s.diameter.data();
   const std::uint32_t* origin = s.origin.data();
   const std::uint8_t* frozen = s.frozen.data();
+  const std::uint8_t* held = held_.data();
   const auto& order = grid.order();
-  const auto& start = pass.list_start();
-  const auto& list = pass.list();
-  const double hw = model_.half_width, compliance = 1.0 / model_.kn;
-  const bool starting = mode == Mode::start, solving = mode == Mode::solve || mode == Mode::last;
-  const bool keep = mode == Mode::last, warm = starting && warm_.size() > 0;
-  // The change of a force in this pass, and its new value.
-  auto change = [&](double& force, double overlap, double denominator) {
-    const double dl =
-        solving ? std::max(-force, (overlap - force * compliance) / denominator) : 0.0;
-    force += dl;
-    return mode == Mode::warm ? force : dl;
-  };
+  const std::uint32_t* start = pass.list_start().data();
+  const std::uint32_t* list = pass.list().data();
+  const double hw = model_.half_width;
+  const bool warm = warm_.size() > 0;
 
 #pragma omp parallel num_threads(threads_) if (threads_ > 1)
   {
     const std::size_t t = std::size_t(omp_get_thread_num());
-    auto& reactions = reactions_[t];
-    auto& kept = kept_[t];
-    reactions.clear();
-    if (keep) kept.clear();
-    std::size_t touching = 0;
-    double worst = 0;
+    auto& found = found_[t];
+    found.clear();
 #pragma omp for schedule(static)
     for (std::size_t k = 0; k < n; ++k) {
       const std::uint32_t i = order[k];
       const double ri = 0.5 * d[i];
-      const double wi = frozen[i] ? 0.0 : mobility[i];
-      const double share_i = wi * std::max<std::uint32_t>(count_[i], 1);
-      double dxi = 0, dyi = 0;
-      std::uint32_t count = 0;
+      const std::uint32_t oi = origin[i];
+      const bool held_i = warm && held[oi];
       if (!frozen[i]) {
         const double left = -hw - (x[i] - ri), right = x[i] + ri - hw, bottom = ri - y[i];
-        if (starting) {
-          side_force_[i] = warm ? warm_.find(PairHistory::key(origin[i], kWall)) : 0.0;
-          floor_force_[i] = warm ? warm_.find(PairHistory::key(origin[i], kFloor)) : 0.0;
-        }
         const double side = std::max(left, right);
-        if (side > 0 || side_force_[i] > 0) {
-          ++count;
-          if (!starting) {
-            worst = std::max(worst, (side - side_force_[i] * compliance) / ri);
-            const double f = change(side_force_[i], side, share_i + compliance);
-            dxi += (left > right ? wi : -wi) * f;
-          }
-          if (keep && side_force_[i] > 0)
-            kept.push_back({PairHistory::key(origin[i], kWall), side_force_[i]});
-        }
-        if (bottom > 0 || floor_force_[i] > 0) {
-          ++count;
-          if (!starting) {
-            worst = std::max(worst, (bottom - floor_force_[i] * compliance) / ri);
-            dyi += wi * change(floor_force_[i], bottom, share_i + compliance);
-          }
-          if (keep && floor_force_[i] > 0)
-            kept.push_back({PairHistory::key(origin[i], kFloor), floor_force_[i]});
-        }
+        const double side_force = held_i ? warm_.find(PairHistory::key(oi, kSide)) : 0.0;
+        const double floor_force = held_i ? warm_.find(PairHistory::key(oi, kFloor)) : 0.0;
+        if (side > -kSkin * ri || side_force > 0)
+          found.push_back({i, kSide, 0, 0, side_force, 0, 0, false});
+        if (bottom > -kSkin * ri || floor_force > 0)
+          found.push_back({i, kFloor, 0, 0, floor_force, 0, 0, false});
       }
       const int own = grid.level(i);
       for (std::uint32_t c = start[k], e = start[k + 1]; c < e; ++c) {
         const std::uint32_t j = list[c];
-        if (frozen[i] && frozen[j]) continue;
+        if ((frozen[i] && frozen[j]) || (grid.level(j) == own && origin[j] < oi)) continue;
         const double dx = x[j] - x[i], dy = y[j] - y[i];
         const double dist2 = dx * dx + dy * dy;
-        const double reach = ri + 0.5 * d[j];
-        if (starting)
-          pair_force_[c] = warm ? warm_.find(PairHistory::key(origin[i], origin[j])) : 0.0;
-        if ((dist2 >= reach * reach && pair_force_[c] == 0) || dist2 == 0) continue;
-        ++count;
-        const bool cross = grid.level(j) != own;
-        if (!starting) {
-          const double wj = frozen[j] ? 0.0 : mobility[j];
-          const double share_j = wj * std::max<std::uint32_t>(count_[j], 1);
-          const double dist = std::sqrt(dist2);
-          worst = std::max(worst,
-                           (reach - dist - pair_force_[c] * compliance) / std::min(ri, 0.5 * d[j]));
-          // Same-level pairs are solved from both sides with bitwise equal inputs (the sum of
-          // the shares commutes) and opposite (dx, dy): exactly opposite moves.
-          const double f = change(pair_force_[c], reach - dist, share_i + share_j + compliance);
-          const double u = f / dist;
-          dxi -= wi * u * dx;
-          dyi -= wi * u * dy;
-          if (cross && !frozen[j]) reactions.push_back({j, wj * u * dx, wj * u * dy, 1});
-          if (keep && pair_force_[c] > 0 && (cross || origin[i] < origin[j]))
-            kept.push_back({PairHistory::key(origin[i], origin[j]), pair_force_[c]});
-        } else if (cross && !frozen[j]) {
-          reactions.push_back({j, 0, 0, 1});
-        }
+        const double rj = 0.5 * d[j], reach = ri + rj, rmin = std::min(ri, rj);
+        const double near = reach + kSkin * rmin;
+        const double force =
+            held_i && held[origin[j]] ? warm_.find(PairHistory::key(oi, origin[j])) : 0.0;
+        if (dist2 < near * near || force > 0) found.push_back({i, j, 0, 0, force, 0, 0, false});
       }
-      dx_[i] = dxi;
-      dy_[i] = dyi;
-      next_count_[i] = count;
-      touching += count > 0;
     }
-    touching_[t] = touching;
-    worst_[t] = worst;
   }
-  residual_ = 0;
-  for (double w : worst_) residual_ = std::max(residual_, w);
-  std::size_t touching = 0;
-  for (int t = 0; t < threads_; ++t) {
-    for (const Reaction& r : reactions_[std::size_t(t)]) {
-      touching += next_count_[r.j] == 0;
-      dx_[r.j] += r.dx;
-      dy_[r.j] += r.dy;
-      next_count_[r.j] += r.count;
-    }
-    touching += touching_[std::size_t(t)];
-  }
-  std::swap(count_, next_count_);
-  if (keep) warm_.assign(kept_.data(), kept_.size());
-  return touching;
+  constraints_.clear();
+  for (const auto& f : found_) constraints_.insert(constraints_.end(), f.begin(), f.end());
 }
 
-std::size_t ContactProjection::run(EngineState& s, const NeighbourGrid& grid, const ForcePass& pass,
-                                   const std::vector<double>& mobility,
-                                   const std::vector<double>& response) {
+// Slots for the particles the constraints involve, in order of first appearance, and each
+// slot's constraints in constraint order.
+void ContactProjection::index_participants(const EngineState& s, const std::vector<double>& drag,
+                                           double dt) {
   const std::size_t n = s.size();
-  dx_.resize(n);
-  dy_.resize(n);
-  // No zeroing: the first pass sets every force it later reads, and the counts.
-  side_force_.resize(n);
-  floor_force_.resize(n);
-  pair_force_.resize(pass.list().size());
-  count_.resize(n);
-  next_count_.resize(n);
-  // A first pass counts each particle's contacts at the free positions.
-  const std::size_t touching = sweep(s, grid, pass, mobility, Mode::start);
-  if (touching == 0) {  // every particle stays at its free position
-    if (warm_.size() > 0) warm_.assign(nullptr, 0);
-    return 0;
+  if (slot_of_.size() != n) slot_of_.assign(n, kNone);
+  particle_.clear();
+  first_.clear();
+  auto slot = [&](std::uint32_t p) {
+    if (slot_of_[p] == kNone) {
+      slot_of_[p] = std::uint32_t(particle_.size());
+      particle_.push_back(p);
+      first_.push_back(0);
+    }
+    ++first_[slot_of_[p]];
+    return slot_of_[p];
+  };
+  for (Constraint& c : constraints_) {
+    c.slot_a = slot(c.a);
+    if (c.b < kSide) c.slot_b = slot(c.b);
   }
-  moved_x_.assign(n, 0.0);
-  moved_y_.assign(n, 0.0);
+  // Counts to offsets; then each slot's incidences in constraint order.
+  const std::size_t slots = particle_.size();
+  std::uint32_t total = 0;
+  for (std::size_t k = 0; k < slots; ++k) {
+    const std::uint32_t c = first_[k];
+    first_[k] = total;
+    total += c;
+  }
+  first_.push_back(total);
+  incidences_.resize(total);
+  count_.assign(slots, 0);  // used as fill positions here, then as contact counts
+  for (std::uint32_t k = 0; k < constraints_.size(); ++k) {
+    const Constraint& c = constraints_[k];
+    incidences_[first_[c.slot_a] + count_[c.slot_a]++] = {k, false};
+    if (c.b < kSide) incidences_[first_[c.slot_b] + count_[c.slot_b]++] = {k, true};
+  }
+  std::fill(count_.begin(), count_.end(), 0u);
+  mobility_.resize(slots);
+  response_.resize(slots);
+  moved_x_.assign(slots, 0.0);
+  moved_y_.assign(slots, 0.0);
+  for (std::size_t k = 0; k < slots; ++k) {
+    const std::uint32_t p = particle_[k];
+    const Mobility m =
+        s.frozen[p] ? Mobility{} : mobility_of(drag[p], model_.mass(s.diameter[p]), dt);
+    mobility_[k] = m.mobility;
+    response_[k] = m.response;
+  }
+}
+
+double ContactProjection::sweep(EngineState& s, Mode mode) {
   double* x = s.x.data();
   double* y = s.y.data();
-  auto move = [&] {
-#pragma omp parallel for num_threads(threads_) if (threads_ > 1) schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-      x[i] += dx_[i];
-      y[i] += dy_[i];
-      // The correction summed apart: x - x_free would lose it to round-off on x.
-      moved_x_[i] += dx_[i];
-      moved_y_[i] += dy_[i];
-    }
+  const double* d = s.diameter.data();
+  const double hw = model_.half_width, compliance = 1.0 / model_.kn;
+  const bool starting = mode == Mode::start, solving = mode == Mode::solve;
+  // The change of a force in this sweep (its value when only warming up).
+  auto change = [&](double& force, double overlap, double denominator) {
+    const double dl =
+        solving ? std::max(-force, (overlap - force * compliance) / denominator) : 0.0;
+    force += dl;
+    return solving ? dl : force;
   };
-  if (warm_.size() > 0) {
-    sweep(s, grid, pass, mobility, Mode::warm);
-    move();
+  const std::size_t constraints = constraints_.size(), slots = particle_.size();
+  double worst = 0;
+#pragma omp parallel num_threads(threads_) if (threads_ > 1 && constraints >= kParallelFrom)
+  {
+#pragma omp for schedule(static) reduction(max : worst)
+    for (std::size_t k = 0; k < constraints; ++k) {
+      Constraint& c = constraints_[k];
+      const std::uint32_t a = c.a;
+      const double ra = 0.5 * d[a];
+      const double share_a = mobility_[c.slot_a] * std::max<std::uint32_t>(count_[c.slot_a], 1);
+      c.mx = c.my = 0;
+      if (c.b >= kSide) {
+        double overlap = ra - y[a], direction = 0;
+        if (c.b == kSide) {
+          const double left = -hw - (x[a] - ra), right = x[a] + ra - hw;
+          overlap = std::max(left, right);
+          direction = left > right ? 1.0 : -1.0;
+        }
+        c.active = overlap > 0 || c.lambda > 0;
+        if (starting || !c.active) continue;
+        worst = std::max(worst, (overlap - c.lambda * compliance) / ra);
+        const double f = change(c.lambda, overlap, share_a + compliance);
+        (c.b == kSide ? c.mx : c.my) = c.b == kSide ? direction * f : f;
+        continue;
+      }
+      const std::uint32_t b = c.b;
+      const double dx = x[b] - x[a], dy = y[b] - y[a];
+      const double dist2 = dx * dx + dy * dy;
+      const double rb = 0.5 * d[b], reach = ra + rb;
+      c.active = (dist2 < reach * reach || c.lambda != 0) && dist2 != 0;
+      if (starting || !c.active) continue;
+      const double share_b = mobility_[c.slot_b] * std::max<std::uint32_t>(count_[c.slot_b], 1);
+      const double dist = std::sqrt(dist2);
+      worst = std::max(worst, (reach - dist - c.lambda * compliance) / std::min(ra, rb));
+      const double u = change(c.lambda, reach - dist, share_a + share_b + compliance) / dist;
+      c.mx = -u * dx;
+      c.my = -u * dy;
+    }
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < slots; ++k) {
+      const double w = mobility_[k];
+      double dx = 0, dy = 0;
+      std::uint32_t count = 0;
+      for (std::uint32_t e = first_[k]; e < first_[k + 1]; ++e) {
+        const Incidence in = incidences_[e];
+        const Constraint& c = constraints_[in.constraint];
+        count += c.active;
+        const double wk = in.is_b ? -w : w;
+        dx += wk * c.mx;
+        dy += wk * c.my;
+      }
+      count_[k] = count;
+      if (starting) continue;
+      const std::uint32_t p = particle_[k];
+      x[p] += dx;
+      y[p] += dy;
+      moved_x_[k] += dx;
+      moved_y_[k] += dy;
+    }
   }
-  // Sweeps until every overlap is within kTolerance of the smaller radius of its compliant
-  // target (checked at the positions each sweep starts from), at most sweeps_.
-  for (int k = 0; k < sweeps_; ++k) {
-    sweep(s, grid, pass, mobility, Mode::solve);
-    move();
-    if (residual_ < kTolerance) break;
+  return worst;
+}
+
+void ContactProjection::keep(const EngineState& s) {
+  const std::uint32_t* origin = s.origin.data();
+  for (std::uint32_t o : held_list_) held_[o] = 0;
+  held_list_.clear();
+  kept_.clear();
+  auto hold = [&](std::uint32_t o) {
+    if (!held_[o]) held_list_.push_back(o);
+    held_[o] = 1;
+  };
+  for (const Constraint& c : constraints_) {
+    if (c.lambda <= 0) continue;
+    const std::uint32_t oa = origin[c.a], ob = c.b >= kSide ? c.b : origin[c.b];
+    kept_.push_back({PairHistory::key(oa, ob), c.lambda});
+    hold(oa);
+    if (c.b < kSide) hold(ob);
   }
-  // A last sweep keeps the forces for the next step (and corrects what is left).
-  sweep(s, grid, pass, mobility, Mode::last);
-  move();
-#pragma omp parallel for num_threads(threads_) if (threads_ > 1) schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    s.vx[i] += response[i] * moved_x_[i];
-    s.vy[i] += response[i] * moved_y_[i];
+  warm_.assign(&kept_, 1);
+}
+
+void ContactProjection::mark_touching(std::vector<double>& touching) const {
+  std::fill(touching.begin(), touching.end(), 0.0);
+  for (std::size_t k = 0; k < particle_.size(); ++k)
+    if (count_[k] > 0) touching[particle_[k]] = 1.0;
+}
+
+ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid,
+                                       const ForcePass& pass, const std::vector<double>& drag,
+                                       double dt) {
+  const std::size_t n = s.size();
+  if (held_.size() != n) {  // first run, or after a checkpoint was loaded
+    held_.assign(n, 0);
+    held_list_.clear();
+    for (const auto& e : warm_.sorted_entries()) {
+      for (std::uint64_t o : {e.key >> 32, e.key & 0xFFFFFFFFu}) {
+        if (o < n && !held_[o]) {
+          held_[o] = 1;
+          held_list_.push_back(std::uint32_t(o));
+        }
+      }
+    }
   }
-  return touching;
+  ProjectionFacts facts;
+  collect(s, grid, pass);
+  index_participants(s, drag, dt);
+  sweep(s, Mode::start);
+  for (std::uint32_t c : count_) facts.touching += c > 0;
+  if (facts.touching == 0) {  // every particle stays at its free position
+    if (warm_.size() > 0) keep(s);
+  } else {
+    bool warm = false;
+    for (const Constraint& c : constraints_) warm = warm || c.lambda > 0;
+    if (warm) sweep(s, Mode::warm);
+    // Sweeps until every overlap is within kTolerance of the smaller radius of its compliant
+    // target (checked at the positions each sweep starts from), at most sweeps_; then one more,
+    // whose forces are kept for the next step.
+    for (int k = 0; k < sweeps_; ++k)
+      if (sweep(s, Mode::solve) < kTolerance) break;
+    sweep(s, Mode::solve);
+    keep(s);
+    const double* d = s.diameter.data();
+    for (std::size_t k = 0; k < particle_.size(); ++k) {
+      const std::uint32_t p = particle_[k];
+      s.vx[p] += response_[k] * moved_x_[k];
+      s.vy[p] += response_[k] * moved_y_[k];
+    }
+    const double hw = model_.half_width;
+    // The overlaps left: the worst, and any deeper than a radius into a wall or than the
+    // smaller diameter between two grains (a blow-up).
+    for (const Constraint& c : constraints_) {
+      const double ra = 0.5 * d[c.a];
+      if (c.b >= kSide) {
+        const double overlap = c.b == kSide ? std::abs(s.x[c.a]) + ra - hw : ra - s.y[c.a];
+        if (overlap > ra) facts.blowup.note(s.origin[c.a], "wall overlap", overlap);
+        facts.max_overlap_ratio = std::max(facts.max_overlap_ratio, overlap / ra);
+      } else {
+        const double rb = 0.5 * d[c.b], rmin = std::min(ra, rb);
+        const double overlap = ra + rb - std::hypot(s.x[c.b] - s.x[c.a], s.y[c.b] - s.y[c.a]);
+        if (overlap > 2 * rmin) facts.blowup.note(s.origin[c.a], "overlap", overlap);
+        facts.max_overlap_ratio = std::max(facts.max_overlap_ratio, overlap / rmin);
+      }
+    }
+  }
+  for (std::uint32_t p : particle_) slot_of_[p] = kNone;
+  return facts;
 }
 
 }  // namespace sedem

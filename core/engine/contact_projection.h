@@ -8,15 +8,21 @@
 // found by a few Jacobi sweeps over the constraints,
 //   dlambda = max(-lambda, (overlap - lambda / K_N) / (n_a w_a + n_b w_b + 1 / K_N)),
 // n the number of contacts of each particle: a Gershgorin bound on the constraint system, so
-// every sweep is a contraction and the two partners see the same dlambda (exact action and
-// reaction). Each sweep reads the previous sweep's positions, gathers per particle over the
-// force pass's candidate lists (a same-level pair is solved identically from both sides; a
-// cross-level pair from the finer side, which queues its partner's share, applied in thread
-// order): deterministic, no atomics. Each step starts from the forces the previous step ended
-// with (kept by sample indices, so re-sorting and list rebuilds keep them; saved in
-// checkpoints): a resting bed is held from the first sweep. Friction and contact torques are not
-// represented.
+// every sweep is a contraction. Each pair's dlambda is computed once and moves both partners
+// (exact action and reaction).
+//
+// One pass over the force pass's candidate lists, at the free positions, collects the
+// constraints: every pair or wall closer than a skin of half the smaller radius, or that held a
+// force at the end of the last step (each step starts from those forces, kept by sample indices
+// so that re-sorting and list rebuilds keep them; saved in checkpoints: a resting bed is held
+// from the first sweep). The sweeps then run over that compact list only, so a dilute
+// suspension, where almost nothing touches, pays for the one pass. Within a sweep every
+// constraint reads the positions the sweep started from (Jacobi), and every particle sums its
+// constraints' moves in a fixed order: the result does not depend on the thread count. Pairs
+// pushed into contact from beyond the skin within one step are resolved at the next step.
+// Friction and contact torques are not represented.
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <iosfwd>
@@ -25,52 +31,93 @@
 #include "core/engine/engine_state.h"
 #include "core/engine/force_pass.h"
 #include "core/engine/forces.h"
+#include "core/engine/instability.h"
 #include "core/engine/neighbour_grid.h"
 #include "core/engine/pair_history.h"
 
 namespace sedem {
 
+// A constant force over a step of a particle under linear drag c (0: none), mass m: the
+// displacement it gives per unit force (`mobility`) and the velocity change per unit of that
+// displacement (`response`). With rate = c/m and a = rate dt, the force F moves the particle by
+// F (a + e^(-a) - 1) / (rate c) and changes its velocity by F (1 - e^(-a)) / c.
+struct Mobility {
+  double mobility = 0, response = 0;
+};
+
+inline Mobility mobility_of(double c, double mass, double dt) {
+  if (c > 0) {
+    const double rate = c / mass, a = dt * rate;
+    // decay - 1 from one call; past 40 response times it is -1 to round-off.
+    const double lost = a > 40 ? -1.0 : std::expm1(-a);
+    // a + lost = a^2/2 - a^3/6 + ... cancels for small a: its series there.
+    const double drift = a < 1e-3 ? a * a * (0.5 - a * (1.0 / 6 - a / 24)) : a + lost;
+    return {drift / (rate * c), -lost * rate / drift};
+  }
+  return {0.5 * dt * dt / mass, 2.0 / dt};
+}
+
+struct ProjectionFacts {
+  std::size_t touching = 0;      // particles touching at the free positions
+  double max_overlap_ratio = 0;  // after the projection: overlap / smaller radius, worst
+  Blowup blowup;
+};
+
 class ContactProjection {
  public:
   void configure(const ForceModel& model, int threads, int sweeps);
-  // `mobility[i]`: displacement per unit force over the step; `response[i]`: velocity change
-  // per unit of that displacement. Moves (x, y) from their free values and adds the matching
-  // velocity change. Returns the number of particles that touched in the first sweep.
-  std::size_t run(EngineState& s, const NeighbourGrid& grid, const ForcePass& pass,
-                  const std::vector<double>& mobility, const std::vector<double>& response);
+  // `drag[i]`: the linear drag coefficient particle i had over the step (mobility_of gives its
+  // mobility). Moves (x, y) from their free values and adds the matching velocity change.
+  ProjectionFacts run(EngineState& s, const NeighbourGrid& grid, const ForcePass& pass,
+                      const std::vector<double>& drag, double dt);
+  // touching[i] > 0 for every particle in contact after the last run, 0 otherwise (size n).
+  void mark_touching(std::vector<double>& touching) const;
+  // The particles the last run's constraints involved (engine order): the only ones it moved.
+  const std::vector<std::uint32_t>& participants() const { return particle_; }
   std::size_t bytes() const;
   void save(std::ostream& out) const;
   void load(std::istream& in);
 
  private:
-  struct Reaction {
-    std::uint32_t j;
-    double dx, dy;
-    std::uint32_t count;
+  static constexpr std::uint32_t kSide = 0xFFFFFFFE, kFloor = 0xFFFFFFFF;  // partner b
+  static constexpr std::uint32_t kNone = 0xFFFFFFFF;
+  struct Constraint {
+    std::uint32_t a, b;            // engine indices; b = kSide or kFloor for a wall
+    std::uint32_t slot_a, slot_b;  // in the participants (slot_b unused for a wall)
+    double lambda;
+    double mx, my;  // this sweep: a moves by w_a (mx, my), b by -w_b (mx, my)
+    bool active;    // touching or pushing at this sweep's positions
+  };
+  struct Incidence {
+    std::uint32_t constraint;
+    bool is_b;
   };
   enum class Mode {
-    start,  // count each particle's contacts; take the forces of the last step
+    start,  // count each particle's contacts; the forces of the last step
     warm,   // displacements of the current forces, unchanged
     solve,  // one Jacobi sweep: change the forces, their displacements
-    last,   // solve, and keep the forces for the next step
   };
-  // One pass at the current positions: displacements into (dx_, dy_), the contact counts at
-  // these positions into count_. Returns the number of touching particles.
-  std::size_t sweep(const EngineState& s, const NeighbourGrid& grid, const ForcePass& pass,
-                    const std::vector<double>& mobility, Mode mode);
+  void collect(const EngineState& s, const NeighbourGrid& grid, const ForcePass& pass);
+  void index_participants(const EngineState& s, const std::vector<double>& drag, double dt);
+  // One sweep at the current positions; moves the participants. Returns the largest overlap
+  // beyond its compliant target / smaller radius among the active constraints.
+  double sweep(EngineState& s, Mode mode);
+  void keep(const EngineState& s);
 
   ForceModel model_;
   int threads_ = 1, sweeps_ = 32;
-  std::vector<double> moved_x_, moved_y_, dx_, dy_;
-  std::vector<double> pair_force_;                // lambda per candidate-list entry
-  std::vector<double> side_force_, floor_force_;  // lambda per particle against walls, bottom
-  std::vector<std::uint32_t> count_, next_count_;
-  std::vector<std::vector<Reaction>> reactions_;
-  std::vector<std::vector<PairHistory::Entry>> kept_;
-  PairHistory warm_;  // forces at the end of the last step; walls as partners kWall, kFloor
-  std::vector<std::size_t> touching_;
-  std::vector<double> worst_;  // per thread: largest overlap beyond its target / radius
-  double residual_ = 0;
+  std::vector<std::vector<Constraint>> found_;  // per thread, at collection
+  std::vector<Constraint> constraints_;
+  std::vector<Incidence> incidences_;  // grouped by participant, in constraint order
+  // Per participant: engine index, mobility, response, contact counts, first incidence,
+  // correction summed apart from the position (x - x_free would lose it to round-off).
+  std::vector<std::uint32_t> particle_, count_, first_;
+  std::vector<double> mobility_, response_, moved_x_, moved_y_;
+  std::vector<std::uint32_t> slot_of_;  // per particle (engine order): its slot, or kNone
+  std::vector<std::uint8_t> held_;      // per particle (sample order): had a force last step
+  std::vector<std::uint32_t> held_list_;
+  std::vector<PairHistory::Entry> kept_;
+  PairHistory warm_;  // forces at the end of the last step; walls as partners kSide, kFloor
 };
 
 }  // namespace sedem

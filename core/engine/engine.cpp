@@ -97,12 +97,12 @@ constexpr char kMagic[8] = {'S', 'E', 'D', 'E', 'M', 'C', 'K', '1'};
 
 }  // namespace
 
-// The margin of the candidate lists, in radii. The lists are rebuilt when a grain has moved half
-// its margin; the exponential integrator's grains move up to crossing_fraction radii a step,
-// so a wider margin keeps rebuilds to one every few steps (a dilute suspension has almost no
-// candidates anyway, and a settled bed is mostly frozen).
+// The margin of the candidate lists, in radii. The exponential integrator's grains move up to
+// crossing_fraction radii a step; a margin of a few steps' travel keeps rebuilds to one every
+// few steps (a dilute suspension has almost no candidates anyway, and a settled bed is mostly
+// frozen), 3 radii at least.
 static double list_margin(const IntegratorConfig& c) {
-  return c.method == "reference" ? 2.0 : std::max(2.0, 8.0 * c.crossing_fraction);
+  return c.method == "reference" ? 3.0 : std::max(3.0, 4.0 * c.crossing_fraction);
 }
 
 Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::move(sample)) {
@@ -118,7 +118,8 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
     model_.contact_forces = false;  // the exponential integrator projects contacts
 
   state_.resize(n);
-  forces_.resize(n);
+  pass_needed_ = needs_force_pass(model_);
+  if (pass_needed_) forces_.resize(n);
   search_.resize(n);
   double dmin = 0, dmax = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -150,7 +151,7 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
   const Fluid& fluid = scene_.fluid;
   IntegratorContext ctx;
   ctx.model = &model_;
-  ctx.drag = DragEvaluator{&model_, &voidage_};
+  ctx.drag = DragEvaluator{&model_, &voidage_, di_felice_tail_re(scene_.forces.min_voidage)};
   ctx.threads = threads_;
   ctx.min_response_time = stokes::response_time(dmin, model_.particle_density, fluid, 0.95);
   ctx.min_terminal_speed = stokes::terminal_velocity(dmin, model_.particle_density, fluid);
@@ -166,10 +167,12 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
   integrator_ = make_integrator(scene_.integrator, ctx);
   freeze_height_ =
       scene_.integrator.freeze_settled && model_.contact ? lowest_measured_height(scene_) : 0.0;
+  // Without the force pass, the freeze check reads the contacts the projection marks.
+  if (!pass_needed_ && freeze_height_ > 0) forces_.stiffness.resize(n);
   // A first look at the contacts, so that the first step is chosen knowing them.
   if (n > 0) {
     rebuild_lists();
-    pass_.run(state_, grid_, springs_, next_springs_, 0.0, forces_, facts_);
+    if (pass_needed_) pass_.run(state_, grid_, springs_, next_springs_, 0.0, forces_, facts_);
     next_springs_ = PairHistory{};
   }
 }
@@ -218,15 +221,18 @@ void Engine::step(double limit) {
     }
     rebuild_lists();
   }
-  pass_.run(state_, grid_, springs_, next_springs_, dt, forces_, facts_);
-  if (facts_.blowup.found) {
-    const auto& b = facts_.blowup;
-    throw InstabilityError(sample_.particles.id[b.particle], time_, b.quantity, b.value);
+  if (pass_needed_) {
+    pass_.run(state_, grid_, springs_, next_springs_, dt, forces_, facts_);
+    if (facts_.blowup.found) {
+      const auto& b = facts_.blowup;
+      throw InstabilityError(sample_.particles.id[b.particle], time_, b.quantity, b.value);
+    }
+    if (model_.friction) std::swap(springs_, next_springs_);
   }
-  if (model_.friction) std::swap(springs_, next_springs_);
 
   Blowup blowup;
   integrator_->advance(state_, forces_, dt, blowup);
+  if (!pass_needed_) integrator_->contact_facts(facts_);
   time_ = last ? limit : time_ + dt;
   stats_.steps += 1;
   stats_.particle_steps += double(n - stats_.frozen);
@@ -236,6 +242,8 @@ void Engine::step(double limit) {
   if (blowup.found)
     throw InstabilityError(sample_.particles.id[blowup.particle], time_, blowup.quantity,
                            blowup.value);
+  if (!pass_needed_ && freeze_height_ > 0 && stats_.steps % 64 == 0)
+    integrator_->mark_touching(forces_.stiffness);
   if (freeze_height_ > 0 && stats_.steps % 64 == 0) freeze_resting();
   lists_stale_ = moved_beyond_margin();
 }
@@ -247,24 +255,41 @@ void Engine::rebuild_lists() {
   grid_.build(n, x0_.data(), y0_.data(), search_.data());
   pass_.build_lists(grid_, n, x0_.data(), y0_.data(), search_.data());
   lists_stale_ = false;
+  ++stats_.list_builds;
 }
 
 // A pair's distance shrinks by at most the sum of both moves; the lists hold every pair within
-// the interaction range plus margin_ (r_i + r_j), so they stay complete while every
-// particle has moved less than half its own margin.
-bool Engine::moved_beyond_margin() const {
+// the interaction range plus margin_ (r_i + r_j), so they stay complete while
+// move_i + move_j < margin_ (r_i + r_j) for every pair, i.e. while the two largest excesses
+// e = move - margin_ r (1% kept in reserve) sum to less than zero. A small grain carried
+// along by a large one thus uses the margin of its partners too, not its own margin alone.
+bool Engine::moved_beyond_margin() {
   const std::size_t n = state_.size();
   const double* x = state_.x.data();
   const double* y = state_.y.data();
   const double* d = state_.diameter.data();
-  int moved = 0;
-#pragma omp parallel for num_threads(threads_) if (threads_ > 1) reduction(| : moved)
-  for (std::size_t i = 0; i < n; ++i) {
-    const double dx = x[i] - x0_[i], dy = y[i] - y0_[i];
-    const double allowed = 0.25 * margin_ * d[i];  // half the margin of radius r = d/2
-    moved |= int(dx * dx + dy * dy > allowed * allowed);
+  const double share = 0.99 * 0.5 * margin_;
+  const int threads = threads_;
+  std::vector<double>& top = top_excess_;
+  top.assign(2 * std::size_t(threads), -HUGE_VAL);  // no allocation after the first step
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+    double first = -HUGE_VAL, second = -HUGE_VAL;
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      const double dx = x[i] - x0_[i], dy = y[i] - y0_[i];
+      const double excess = std::sqrt(dx * dx + dy * dy) - share * d[i];
+      if (excess > second) {
+        second = std::max(std::min(first, excess), second);
+        first = std::max(first, excess);
+      }
+    }
+    const std::size_t t = std::size_t(omp_get_thread_num());
+    top[2 * t] = first;
+    top[2 * t + 1] = second;
   }
-  return moved != 0;
+  std::sort(top.begin(), top.end());
+  return n > 1 && top[top.size() - 1] + top[top.size() - 2] >= 0;
 }
 
 // A particle is at rest when it touches something and moves at less than 1e-3 of its

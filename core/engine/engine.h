@@ -40,6 +40,7 @@ struct EngineStats {
   std::size_t contacts = 0;      // particles touching something at the last step
   std::size_t frozen = 0;        // particles frozen in the bed
   double max_overlap_ratio = 0;  // largest overlap / smaller radius seen so far
+  std::int64_t list_builds = 0;  // candidate lists built (Verlet rebuilds), the first included
 };
 
 class Engine {
@@ -76,16 +77,18 @@ class Engine {
   void freeze_resting();
   void resort();
   void rebuild_lists();
-  bool moved_beyond_margin() const;
+  bool moved_beyond_margin();
 
   Scene scene_;
   mutable Sample sample_;
   mutable std::int64_t synced_step_ = -1;
   EngineState state_;
   ForceAccumulators forces_;
-  std::vector<double> search_;   // search radius: radius + lubrication reach + skins + margin
-  std::vector<double> x0_, y0_;  // positions when the candidate lists were built
+  std::vector<double> search_;      // search radius: radius + lubrication reach + skins + margin
+  std::vector<double> x0_, y0_;     // positions when the candidate lists were built
+  std::vector<double> top_excess_;  // per thread: the two largest moves beyond the margin
   bool lists_stale_ = true;
+  bool pass_needed_ = true;  // see needs_force_pass
   std::int64_t resorted_at_ = 0;
   std::vector<double> scratch_;
   std::vector<std::uint32_t> scratch_index_;

@@ -19,6 +19,14 @@
 
 namespace sedem {
 
+// Whether a step needs the force pass: pair forces (the reference integrator) or lubrication.
+// Otherwise a free particle feels only weight, buoyancy and drag, which the integrator applies
+// itself, and the exponential integrator's projection finds the contacts in its own one pass
+// over the candidate lists.
+inline bool needs_force_pass(const ForceModel& m) {
+  return m.contact_forces || m.lubrication;
+}
+
 struct PassFacts {
   std::size_t contacts = 0;      // particles touching a wall or another particle
   double min_contact_mass = 0;   // lightest particle touching or within the skin (0 if none)

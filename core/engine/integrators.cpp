@@ -21,29 +21,39 @@ double DragEvaluator::coefficient(double d, double weight, double speed, double 
     case DragLaw::stokes:
       return 3.0 * std::numbers::pi * model->viscosity * d;
     case DragLaw::di_felice: {
-      // drag::di_felice_coefficient with the cell's ln(eps) reused: eps^(2 - chi) as one exp.
+      // drag::di_felice_coefficient with eps^(2 - chi) = eps^-1.7 (per cell) eps^(0.65 g),
+      // g = exp(-(1.5 - log10 Re)^2 / 2). Below tail_re the second factor is 1 to round-off
+      // (its exponent is below 2^-54 for every voidage the floor allows): it is not computed.
       // The engine's terminal velocities are tested against drag::di_felice_terminal_velocity.
-      double eps, log_eps;
-      if (model->voidage_excludes_self) {
-        eps = voidage->excluding(x, y, weight * model->volume(d));
+      const std::size_t cell = voidage->cell(x, y);
+      double eps = voidage->voidage(cell), log_eps = voidage->log_voidage(cell);
+      double power = voidage->hindrance(cell);
+      if (model->voidage_excludes_self && weight > 0) {
+        eps = voidage->excluding(cell, weight * model->volume(d));
         log_eps = std::log(eps);
-      } else {
-        eps = voidage->at(x, y);
-        log_eps = voidage->log_at(x, y);
+        power = std::exp(-1.7 * log_eps);
       }
       const double mu = model->viscosity;
       const double re = model->fluid_density * eps * speed * d / mu;
       const double root = 0.63 * std::sqrt(re) + 4.8;
-      double chi = 3.7;
-      if (re > 0) {
+      if (re > tail_re && log_eps != 0) {
         const double l = 1.5 - std::log10(re);
-        chi -= 0.65 * std::exp(-0.5 * l * l);
+        power *= std::exp(0.65 * std::exp(-0.5 * l * l) * log_eps);
       }
       const double area = std::numbers::pi * d * d / 4.0;
-      return 0.5 * root * root * mu / (eps * d) * area * std::exp((2.0 - chi) * log_eps);
+      return 0.5 * root * root * mu / (eps * d) * area * power;
     }
   }
   return 0;
+}
+
+double di_felice_tail_re(double min_voidage) {
+  const double worst_log = -std::log(std::min(1.0, std::max(min_voidage, 1e-300)));
+  if (worst_log <= 0) return HUGE_VAL;
+  // 0.65 exp(-l0^2 / 2) worst_log = 2^-54 at l0; half that Re keeps a wide margin (g is then
+  // smaller by exp(-0.3 l0)) over the round-off of log10 and exp.
+  const double l0 = std::sqrt(2 * std::log(0.65 * worst_log * std::ldexp(1.0, 54)));
+  return 0.5 * std::pow(10.0, 1.5 - l0);
 }
 
 namespace {
@@ -100,15 +110,17 @@ class ReferenceIntegrator final : public Integrator {
   ReferenceIntegrator(const IntegratorConfig& c, const IntegratorContext& x) : config_(c), ctx_(x) {
     step_ = std::min(config_.max_step, config_.step_factor * ctx_.min_response_time);
     ceiling_ = config_.max_step;
+    // c/m of the smallest grain in clear water: t_tr(95 %) = ln(20) m / c.
+    clear_rate_ = ctx_.min_response_time > 0 ? std::log(20.0) / ctx_.min_response_time : 0;
   }
   const char* name() const override { return "reference"; }
 
   double next_step(const PassFacts& last) override {
     double dt = step_;
     // Statistical weights can pack a voidage cell enough to make a grain's drag response several
-    // times quicker than in clear water; the explicit drag update is stable below 2 m/c. One
-    // m/c leaves room for a grain entering a denser cell before the next step sees it.
-    if (rate_ > 0) dt = std::min(dt, 1.0 / rate_);
+    // times quicker than in clear water: the step shrinks in proportion, as the paper's rule
+    // would with t_tr taken at that drag.
+    if (rate_ > clear_rate_) dt *= clear_rate_ / rate_;
     if (last.min_contact_mass > 0) {
       const ForceModel& m = *ctx_.model;
       dt = std::min(dt, 0.1 * std::sqrt(last.min_contact_mass / (m.kn + m.kt)));
@@ -187,7 +199,7 @@ class ReferenceIntegrator final : public Integrator {
   IntegratorConfig config_;
   IntegratorContext ctx_;
   std::vector<ThreadSums> sums_;
-  double step_ = 0, ceiling_ = 0, window_change_ = 0, rate_ = 0, max_speed_ = 0;
+  double step_ = 0, ceiling_ = 0, window_change_ = 0, rate_ = 0, max_speed_ = 0, clear_rate_ = 0;
   std::int64_t window_steps_ = 0;
   bool grown_ = false;
 };
@@ -210,69 +222,63 @@ class ExponentialIntegrator final : public Integrator {
   void advance(EngineState& s, const ForceAccumulators& f, double dt, Blowup& blowup) override {
     const ForceModel& m = *ctx_.model;
     const bool project = m.contact && !m.contact_forces && ctx_.grid && ctx_.pass;
-    if (project) {
-      mobility_.resize(s.size());
-      response_.resize(s.size());
-    }
+    // Without the force pass a free particle feels only weight, buoyancy and drag.
+    const bool pass_forces = needs_force_pass(m);
+    if (project) drag_.resize(s.size());
     // Free update: the forces of the pass (no contact force when contacts are projected), the
     // lubrication's stiffness folded into the damping.
-    integrate(ctx_.threads, s.size(), sums_, [&](std::size_t i, ThreadSums&) {
-      if (s.frozen[i]) {
-        if (project) mobility_[i] = response_[i] = 0;
-        return;
-      }
-      const double d = s.diameter[i];
-      const double mass = m.mass(d);
-      const double vx = s.vx[i], vy = s.vy[i];
-      const double c =
-          ctx_.drag.coefficient(d, s.weight[i], std::sqrt(vx * vx + vy * vy), s.x[i], s.y[i]) +
-          f.lubrication_stiffness[i] * dt;
-      if (c > 0) {
-        const double rate = c / mass, a = dt * rate;
-        // decay - 1 from one call; past 40 response times it is -1 to round-off.
-        const double lost = a > 40 ? -1.0 : std::expm1(-a);
-        const double decay = 1.0 + lost;
-        const double relax = -lost / rate;                // integral of the decay over dt
-        const double ux = f.fx[i] / c, uy = f.fy[i] / c;  // velocity the step tends to
-        s.x[i] += ux * dt + (vx - ux) * relax;
-        s.y[i] += uy * dt + (vy - uy) * relax;
-        s.vx[i] = ux + (vx - ux) * decay;
-        s.vy[i] = uy + (vy - uy) * decay;
-        if (project) {
-          // A constant force F over the step moves the particle by F (a + lost) / (rate c)
-          // and changes its velocity by -F lost / c. a + lost = a^2/2 - a^3/6 + ... cancels
-          // for small a: its series there.
-          const double drift = a < 1e-3 ? a * a * (0.5 - a * (1.0 / 6 - a / 24)) : a + lost;
-          mobility_[i] = drift / (rate * c);
-          response_[i] = -lost * rate / drift;
-        }
-      } else {
-        const double ax = f.fx[i] / mass, ay = f.fy[i] / mass;
-        s.x[i] += dt * (vx + 0.5 * dt * ax);
-        s.y[i] += dt * (vy + 0.5 * dt * ay);
-        s.vx[i] += dt * ax;
-        s.vy[i] += dt * ay;
-        if (project) {
-          mobility_[i] = 0.5 * dt * dt / mass;
-          response_[i] = 2.0 / dt;
-        }
-      }
-    });
-    if (project && dt > 0) projection_.run(s, *ctx_.grid, *ctx_.pass, mobility_, response_);
-    // Checks every moving grain, and finds the fastest in radii per second for the next step.
     const ThreadSums sums =
         integrate(ctx_.threads, s.size(), sums_, [&](std::size_t i, ThreadSums& t) {
           if (s.frozen[i]) return;
-          check(s, i, ctx_.runaway_speed, t.blowup);
           const double d = s.diameter[i];
-          const double v2 = s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i];
-          // A free grain may reach its settling speed within the step; a supported one not.
-          const double settling = f.stiffness[i] > 0 ? 0.0 : settling_ * d * d;
-          const double speed = std::sqrt(std::max(v2, settling * settling));
-          t.max_radii_per_s = std::max(t.max_radii_per_s, 2 * speed / d);
+          const double mass = m.mass(d);
+          const double vx = s.vx[i], vy = s.vy[i];
+          double c =
+              ctx_.drag.coefficient(d, s.weight[i], std::sqrt(vx * vx + vy * vy), s.x[i], s.y[i]);
+          if (pass_forces) c += f.lubrication_stiffness[i] * dt;
+          const double fx = pass_forces ? f.fx[i] : 0.0;
+          const double fy = pass_forces ? f.fy[i] : m.gravity_force(d);
+          if (project) drag_[i] = c;
+          if (c > 0) {
+            const double rate = c / mass, a = dt * rate;
+            // decay - 1 from one call; past 40 response times it is -1 to round-off.
+            const double lost = a > 40 ? -1.0 : std::expm1(-a);
+            const double decay = 1.0 + lost;
+            const double relax = -lost / rate;      // integral of the decay over dt
+            const double ux = fx / c, uy = fy / c;  // velocity the step tends to
+            s.x[i] += ux * dt + (vx - ux) * relax;
+            s.y[i] += uy * dt + (vy - uy) * relax;
+            s.vx[i] = ux + (vx - ux) * decay;
+            s.vy[i] = uy + (vy - uy) * decay;
+          } else {
+            const double ax = fx / mass, ay = fy / mass;
+            s.x[i] += dt * (vx + 0.5 * dt * ax);
+            s.y[i] += dt * (vy + 0.5 * dt * ay);
+            s.vx[i] += dt * ax;
+            s.vy[i] += dt * ay;
+          }
+          check(s, i, ctx_.runaway_speed, t.blowup);
         });
     if (sums.blowup.found && !blowup.found) blowup = sums.blowup;
-    step_ = limited(sums.max_radii_per_s);
+    facts_ = ProjectionFacts{};
+    if (project && dt > 0) {
+      facts_ = projection_.run(s, *ctx_.grid, *ctx_.pass, drag_, dt);
+      if (facts_.blowup.found && !blowup.found) blowup = facts_.blowup;
+      Blowup moved;
+      for (std::uint32_t p : projection_.participants())
+        if (!s.frozen[p]) check(s, p, ctx_.runaway_speed, moved);
+      if (moved.found && !blowup.found) blowup = moved;
+    }
+    step_ = limited(fastest(s));
+  }
+
+  void contact_facts(PassFacts& facts) const override {
+    facts.contacts = facts_.touching;
+    facts.max_overlap_ratio = facts_.max_overlap_ratio;
+    facts.min_contact_mass = 0;
+  }
+  void mark_touching(std::vector<double>& touching) const override {
+    projection_.mark_touching(touching);
   }
 
   void save(std::ostream& out) const override {
@@ -283,9 +289,7 @@ class ExponentialIntegrator final : public Integrator {
     in.read(reinterpret_cast<char*>(&step_), 8);
     projection_.load(in);
   }
-  std::size_t bytes() const override {
-    return projection_.bytes() + (mobility_.capacity() + response_.capacity()) * 8;
-  }
+  std::size_t bytes() const override { return projection_.bytes() + drag_.capacity() * 8; }
 
  private:
   IntegratorConfig config_;
@@ -297,8 +301,28 @@ class ExponentialIntegrator final : public Integrator {
     if (!crossing_ || radii_per_s <= 0) return ceiling_;
     return std::min(ceiling_, config_.crossing_fraction / radii_per_s);
   }
+  // The fastest moving grain, in its radii per second. A free grain may reach its settling
+  // speed within the next step; one in a contact constraint moves as the projection left it.
+  double fastest(const EngineState& s) {
+    if (!crossing_) return 0;
+    constrained_.resize(s.size());
+    for (std::uint32_t p : projection_.participants()) constrained_[p] = 1;
+    const ThreadSums sums =
+        integrate(ctx_.threads, s.size(), sums_, [&](std::size_t i, ThreadSums& t) {
+          if (s.frozen[i]) return;
+          const double d = s.diameter[i];
+          const double v2 = s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i];
+          const double settling = constrained_[i] ? 0.0 : settling_ * d * d;
+          const double speed = std::sqrt(std::max(v2, settling * settling));
+          t.max_radii_per_s = std::max(t.max_radii_per_s, 2 * speed / d);
+        });
+    for (std::uint32_t p : projection_.participants()) constrained_[p] = 0;
+    return sums.max_radii_per_s;
+  }
 
-  std::vector<double> mobility_, response_;  // per particle, this step (see advance)
+  std::vector<double> drag_;               // per particle: its drag coefficient over this step
+  std::vector<std::uint8_t> constrained_;  // per particle, zero between steps
+  ProjectionFacts facts_;
   double step_ = 0, ceiling_ = 0;
   double settling_ = 0;  // clear-water settling speed / d^2
   bool crossing_ = false;

@@ -13,8 +13,8 @@
 //   that small step, not discovered deep after a large one (the spring would return more energy
 //   than the grain brought): pairs closer than a skin of 0.25 radii count as touching, and the
 //   step keeps every grain from crossing half the smallest skin (0.5 skin r_min / v_max).
-//   The step never exceeds m/c of the stiffest drag felt in the last step (the explicit drag
-//   is stable below 2 m/c; hindered grains respond quicker than in clear water).
+//   Where the drag felt in the last step is stiffer than the smallest grain's in clear water
+//   (a packed voidage cell), the step shrinks in proportion.
 //
 // exponential: the drag is linear in the velocity over a step (Stokes exactly; Di Felice with its
 //   coefficient frozen at the step's start), so m dv/dt = F - c v is solved exactly over the
@@ -32,9 +32,11 @@
 //   settle out. It is also at most fast_step_factor * min t_tr and max_step. docs/engine.md has the
 //   details.
 
+#include <algorithm>
 #include <cstdint>
 #include <iosfwd>
 #include <memory>
+#include <vector>
 
 #include "core/engine/engine_config.h"
 #include "core/engine/engine_state.h"
@@ -49,9 +51,14 @@ namespace sedem {
 struct DragEvaluator {
   const ForceModel* model = nullptr;
   const VoidageGrid* voidage = nullptr;
+  double tail_re = 0;  // below it the Di Felice exponent's Re term is lost to round-off
   // `weight`: the grain's statistical weight, left out of its voidage if the model says so.
   double coefficient(double d, double weight, double speed, double x, double y) const;
 };
+
+// The Reynolds number below which 0.65 exp(-(1.5 - log10 Re)^2 / 2) |ln eps| < 2^-54 for every
+// voidage down to `min_voidage`, with a margin.
+double di_felice_tail_re(double min_voidage);
 
 struct IntegratorContext {
   const ForceModel* model = nullptr;
@@ -80,6 +87,12 @@ class Integrator {
   virtual void save(std::ostream& out) const = 0;
   virtual void load(std::istream& in) = 0;
   virtual std::size_t bytes() const { return 0; }  // working memory
+  // When the force pass did not run (see needs_force_pass): the contacts the last advance
+  // found, into `facts`, and touching[i] > 0 for every particle then in contact.
+  virtual void contact_facts(PassFacts&) const {}
+  virtual void mark_touching(std::vector<double>& touching) const {
+    std::fill(touching.begin(), touching.end(), 0.0);
+  }
 };
 
 std::unique_ptr<Integrator> make_integrator(const IntegratorConfig& config,

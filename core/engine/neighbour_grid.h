@@ -23,9 +23,10 @@ class NeighbourGrid {
                  double height);
   void build(std::size_t n, const double* x, const double* y, const double* radius);
 
-  // Calls visit(j) for every j != i stored in a level >= level(i) whose cell lies within
-  // radius[i] + the level's largest radius of i. Same-level pairs are thus seen from both
-  // sides; cross-level pairs only from the finer side (cross_level(j, i) tells them apart).
+  // Calls visit(j), once, for every j != i stored in a level >= level(i) whose cell lies
+  // within radius[i] + the level's largest radius of i, and possibly for some farther j of
+  // those levels (the caller tests the distance). Same-level pairs are thus seen from both
+  // sides; cross-level pairs only from the finer side.
   template <class Visit>
   void for_each_candidate(std::size_t i, const double* x, const double* y, const double* radius,
                           Visit&& visit) const;
@@ -77,12 +78,25 @@ void NeighbourGrid::for_each_candidate(std::size_t i, const double* x, const dou
     const double r = reach + radius[i];
     const std::int64_t c0 = column(l, xi - r), c1 = column(l, xi + r);
     const std::int64_t r0 = row(l, yi - r), r1 = row(l, yi + r);
+    // The cells of one row are consecutive buckets. When no two cells of the (at most 3 x 3)
+    // block can share a bucket, a row is one range of the sorted particles, and a particle
+    // met there is visited once: only its level need be checked (buckets are shared by
+    // distant cells; the caller's distance test drops those).
+    const bool distinct = std::uint64_t(2 * columns_[l] + 3) <= mask_;
     for (std::int64_t cy = r0; cy <= r1; ++cy) {
+      const std::uint64_t b0 = key(l, c0, cy) & mask_, b1 = key(l, c1, cy) & mask_;
+      if (distinct && b0 <= b1) {
+        for (std::uint32_t k = start_[b0], e = start_[b1 + 1]; k < e; ++k) {
+          const std::uint32_t j = sorted_[k];
+          if (level_[j] == l && j != i) visit(j);
+        }
+        continue;
+      }
       for (std::int64_t cx = c0; cx <= c1; ++cx) {
         const std::uint64_t b = key(l, cx, cy) & mask_;
         for (std::uint32_t k = start_[b], e = start_[b + 1]; k < e; ++k) {
           const std::uint32_t j = sorted_[k];
-          // Buckets are shared by distant cells: keep only the particles of this cell.
+          // Keep only the particles of this cell.
           if (level_[j] != l || j == i || column(l, x[j]) != cx || row(l, y[j]) != cy) continue;
           visit(j);
         }

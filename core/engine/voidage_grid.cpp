@@ -21,6 +21,7 @@ void VoidageGrid::configure(double cell, double half_width, double height, doubl
   voidage_.assign(std::size_t(columns_ * rows_), 1.0);
   log_voidage_.assign(voidage_.size(), 0.0);
   solid_.assign(voidage_.size(), 0.0);
+  hindrance_.assign(voidage_.size(), 1.0);
   partial_.assign(voidage_.size() * std::size_t(threads_), 0.0);
 }
 
@@ -44,6 +45,7 @@ void VoidageGrid::compute(std::size_t n, const double* x, const double* y, const
     solid_[c] = solid * inv;
     voidage_[c] = std::max(min_voidage_, 1.0 - solid_[c]);
     log_voidage_[c] = std::log(voidage_[c]);
+    hindrance_[c] = std::exp(-1.7 * log_voidage_[c]);
   }
 }
 

@@ -20,17 +20,22 @@ class VoidageGrid {
   double at(double x, double y) const { return voidage_[cell_of(x, y)]; }
   // ln(eps) of the cell at (x, y), kept alongside so that eps^a costs one exp.
   double log_at(double x, double y) const { return log_voidage_[cell_of(x, y)]; }
-  // The voidage at (x, y) without a grain of `own_volume` (its weight times its volume) that
+  // The same by cell index, and eps^-1.7 (the Di Felice drag's factor at low Re), per cell.
+  std::size_t cell(double x, double y) const { return cell_of(x, y); }
+  double voidage(std::size_t c) const { return voidage_[c]; }
+  double log_voidage(std::size_t c) const { return log_voidage_[c]; }
+  double hindrance(std::size_t c) const { return hindrance_[c]; }
+  double min_voidage() const { return min_voidage_; }
+  // The voidage of cell c without a grain of `own_volume` (its weight times its volume) that
   // lies there. A grain standing for many real ones would otherwise hinder itself: at 1000
   // particles in a sample, one alone makes ~3 % solids in a 4 mm cell. Leaving it out makes
   // the estimate unbiased for a homogeneous suspension (the others are then what surrounds it).
-  double excluding(double x, double y, double own_volume) const {
-    const std::size_t c = cell_of(x, y);
+  double excluding(std::size_t c, double own_volume) const {
     const double eps = 1.0 - solid_[c] + own_volume * inverse_volume_;
     return eps < min_voidage_ ? min_voidage_ : (eps > 1.0 ? 1.0 : eps);
   }
   std::size_t cell_count() const { return voidage_.size(); }
-  std::size_t bytes() const { return (3 * voidage_.size() + partial_.size()) * sizeof(double); }
+  std::size_t bytes() const { return (4 * voidage_.size() + partial_.size()) * sizeof(double); }
 
  private:
   std::size_t cell_of(double x, double y) const {
@@ -43,7 +48,7 @@ class VoidageGrid {
          min_voidage_ = 0;
   long columns_ = 1, rows_ = 1;
   int threads_ = 1;
-  std::vector<double> voidage_, log_voidage_, partial_;
+  std::vector<double> voidage_, log_voidage_, hindrance_, partial_;
   std::vector<double> solid_;  // solid fraction per cell, not floored
 };
 
