@@ -2,6 +2,7 @@
 //
 //   sedem_bench_engine [--out DIR] [--huge] [--quick] [--throughput-only]
 //                      [--cases dilute,bed] [--counts 1000,1000000] [--particle-steps N]
+//                      [--set key=value ...]
 //
 // Prints its figures and writes DIR/engine_throughput.csv and DIR/engine_stability.csv.
 //  - throughput: particle-steps per second against particle count (1e3 ... 1e6; 1e7 with
@@ -23,6 +24,7 @@
 
 #include "core/engine/engine.h"
 #include "core/physics/stokes.h"
+#include "core/scene/scene_loader.h"
 
 namespace {
 
@@ -139,8 +141,11 @@ Outcome run(const Scene& scene, Sample sample, double duration, int samples) {
   return o;
 }
 
+// Keys every benchmark scene takes from --set (e.g. --set forces.drag=stokes).
+std::vector<std::string> g_overrides;
+
 Scene base_scene(const std::string& method, int threads = 0) {
-  Scene s;
+  Scene s = parse_scene("", "sedem_bench_engine --set", g_overrides);
   s.integrator.threads = threads;
   s.integrator.method = method;
   s.integrator.freeze_settled = false;
@@ -175,12 +180,14 @@ int main(int argc, char** argv) {
       cases = split(argv[++a]);
     else if (arg == "--particle-steps" && a + 1 < argc)
       target = std::stod(argv[++a]);
+    else if (arg == "--set" && a + 1 < argc)
+      g_overrides.push_back(argv[++a]);
     else if (arg == "--counts" && a + 1 < argc)
       for (const std::string& c : split(argv[++a])) chosen_counts.push_back(std::stoul(c));
     else {
       std::fprintf(stderr,
                    "usage: %s [--out DIR] [--huge] [--quick] [--throughput-only] "
-                   "[--cases dilute,bed] [--counts N,...] [--particle-steps N]\n",
+                   "[--cases dilute,bed] [--counts N,...] [--particle-steps N] [--set key=value]\n",
                    argv[0]);
       return 2;
     }
