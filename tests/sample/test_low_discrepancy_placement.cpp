@@ -13,6 +13,7 @@
 #include "core/sample/quasi_random.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
+#include "tests/sample/placement_checks.h"
 
 namespace sedem {
 namespace {
@@ -135,26 +136,13 @@ TEST(LowDiscrepancyPlacement, EachSizeAndEachFinerRunCountsTrueInEveryBand) {
 // Brute force over every pair, in a small dense section (a third of the plane covered): the
 // points that would overlap move to free places nearby.
 TEST(LowDiscrepancyPlacement, NoOverlapAndInsideTheWallsBottomAndSurface) {
-  Cylinder c;
-  c.height = 0.003;
-  c.diameter = 0.002;
+  const Cylinder c = test::small_dense_section();
   Particles p;
   p.resize(3000);
   for (std::size_t i = 0; i < p.size(); ++i) p.diameter[i] = (i < 1500 ? 12e-6 : 40e-6);
   place_low_discrepancy(p, c, 3);
   EXPECT_GT(area_fraction(p, c), 0.3);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double r = 0.5 * p.diameter[i];
-    ASSERT_GE(p.x[i] - r, -c.half_width());
-    ASSERT_LE(p.x[i] + r, c.half_width());
-    ASSERT_GE(p.y[i] - r, 0.0);
-    ASSERT_LE(p.y[i] + r, c.height);
-    for (std::size_t j = 0; j < i; ++j) {
-      const double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j];
-      const double touch = r + 0.5 * p.diameter[j];
-      ASSERT_GE(dx * dx + dy * dy, touch * touch) << i << " overlaps " << j;
-    }
-  }
+  test::expect_inside_and_apart(p, c);
 }
 
 // A dilute sample: every particle sits exactly on its point (none had to move), which is

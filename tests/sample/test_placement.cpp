@@ -9,6 +9,7 @@
 #include "core/sample/placement.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
+#include "tests/sample/placement_checks.h"
 
 namespace sedem {
 namespace {
@@ -82,26 +83,13 @@ TEST(Placement, EverySizeIsSpreadEvenlyOverTheRows) {
 
 // Brute force over every pair, in a small dense section (a third of the plane covered).
 TEST(Placement, NoOverlapAndInsideTheWallsBottomAndSurface) {
-  Cylinder c;
-  c.height = 0.003;
-  c.diameter = 0.002;
+  const Cylinder c = test::small_dense_section();
   Particles p;
   p.resize(3000);
   for (std::size_t i = 0; i < p.size(); ++i) p.diameter[i] = (i % 2 == 0 ? 40e-6 : 12e-6);
   place_stratified(p, c, PlacementConfig{}, 3);
   EXPECT_GT(area_fraction(p, c), 0.3);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double r = 0.5 * p.diameter[i];
-    ASSERT_GE(p.x[i] - r, -c.half_width());
-    ASSERT_LE(p.x[i] + r, c.half_width());
-    ASSERT_GE(p.y[i] - r, 0.0);
-    ASSERT_LE(p.y[i] + r, c.height);
-    for (std::size_t j = 0; j < i; ++j) {
-      const double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j];
-      const double touch = r + 0.5 * p.diameter[j];
-      ASSERT_GE(dx * dx + dy * dy, touch * touch) << i << " overlaps " << j;
-    }
-  }
+  test::expect_inside_and_apart(p, c);
 }
 
 TEST(Placement, SameSeedSameSampleOtherSeedOtherSample) {
