@@ -26,12 +26,15 @@ double DragEvaluator::coefficient(double d, double weight, double speed, double 
       // (its exponent is below 2^-54 for every voidage the floor allows): it is not computed.
       // The engine's terminal velocities are tested against drag::di_felice_terminal_velocity.
       const std::size_t cell = voidage->cell(x, y);
-      double eps = voidage->voidage(cell), log_eps = voidage->log_voidage(cell);
-      double power = voidage->hindrance(cell);
+      double eps, log_eps, power;
       if (model->voidage_excludes_self && weight > 0) {
         eps = voidage->excluding(cell, weight * model->volume(d));
         log_eps = std::log(eps);
         power = std::exp(-1.7 * log_eps);
+      } else {
+        eps = voidage->voidage(cell);
+        log_eps = voidage->log_voidage(cell);
+        power = voidage->hindrance(cell);
       }
       const double mu = model->viscosity;
       const double re = model->fluid_density * eps * speed * d / mu;
