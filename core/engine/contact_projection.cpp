@@ -21,8 +21,10 @@ constexpr std::size_t kParallelFrom = std::size_t(1) << 15;
 
 }  // namespace
 
-void ContactProjection::configure(const ForceModel& model, int threads, int sweeps) {
+void ContactProjection::configure(const ForceModel& model, int threads, int sweeps,
+                                  std::size_t grains) {
   model_ = model;
+  grains_ = grains;
   threads_ = std::max(1, threads);
   sweeps_ = std::max(1, sweeps);
   found_.resize(std::size_t(threads_));
@@ -275,7 +277,7 @@ void ContactProjection::mark_touching(std::vector<double>& touching) const {
 ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid,
                                        const ForcePass& pass, const std::vector<double>& drag,
                                        double dt) {
-  const std::size_t n = s.size();
+  const std::size_t n = std::max(grains_, s.size());
   if (held_.size() != n) {  // first run, or after a checkpoint was loaded
     held_.assign(n, 0);
     held_list_.clear();

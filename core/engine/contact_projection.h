@@ -65,7 +65,9 @@ struct ProjectionFacts {
 
 class ContactProjection {
  public:
-  void configure(const ForceModel& model, int threads, int sweeps);
+  // `grains`: the sample's size; particles are keyed by their sample index (`origin`), which
+  // with local time stepping may exceed the count of particles the state holds.
+  void configure(const ForceModel& model, int threads, int sweeps, std::size_t grains);
   // `drag[i]`: the linear drag coefficient particle i had over the step (mobility_of gives its
   // mobility). Moves (x, y) from their free values and adds the matching velocity change.
   ProjectionFacts run(EngineState& s, const NeighbourGrid& grid, const ForcePass& pass,
@@ -106,6 +108,7 @@ class ContactProjection {
 
   ForceModel model_;
   int threads_ = 1, sweeps_ = 32;
+  std::size_t grains_ = 0;
   std::vector<std::vector<Constraint>> found_;  // per thread, at collection
   std::vector<Constraint> constraints_;
   std::vector<Incidence> incidences_;  // grouped by participant, in constraint order

@@ -112,6 +112,11 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
   // Below a few thousand particles a step takes microseconds and forking threads costs more.
   if (n < 2048) threads_ = 1;
   model_ = force_model(scene_, sample_.particle_density);
+  // Local time stepping is serial (its work is in syncs taken one at a time, in time order).
+  // It needs no force pass, so not with lubrication.
+  local_ = scene_.integrator.method == "exponential" && scene_.integrator.local_steps &&
+           !model_.lubrication;
+  if (local_) threads_ = 1;
   if (scene_.integrator.method == "reference")
     model_.skin = 0.25;
   else
@@ -164,11 +169,18 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
   ctx.max_radius = 0.5 * dmax;
   ctx.grid = &grid_;
   ctx.pass = &pass_;
+  ctx.grains = n;
+  ctx.members_only = local_;
+  drag_ = ctx.drag;
   integrator_ = make_integrator(scene_.integrator, ctx);
   freeze_height_ =
       scene_.integrator.freeze_settled && model_.contact ? lowest_measured_height(scene_) : 0.0;
   // Without the force pass, the freeze check reads the contacts the projection marks.
   if (!pass_needed_ && freeze_height_ > 0) forces_.stiffness.resize(n);
+  if (local_) {
+    start_local();
+    return;
+  }
   // A first look at the contacts, so that the first step is chosen knowing them.
   if (n > 0) {
     rebuild_lists();
@@ -191,6 +203,19 @@ const Particles& Engine::particles() const {
       p.vy[o] = state_.vy[i];
       p.omega[o] = state_.omega[i];
     }
+    if (local_) {
+      for (std::uint32_t id = 0; id < kind_.size(); ++id) {
+        if (kind_[id] == kMoving || kind_[id] == kFrozen) continue;
+        const FreeFlight::Point q = kind_[id] == kCoasting
+                                        ? flight_[id].at(time_ - t0_[id])
+                                        : FreeFlight::Point{flight_[id].x, flight_[id].y, 0, 0};
+        p.x[id] = q.x;
+        p.y[id] = q.y;
+        p.vx[id] = q.vx;
+        p.vy[id] = q.vy;
+        p.omega[id] = 0;
+      }
+    }
     synced_step_ = stats_.steps;
   }
   return sample_.particles;
@@ -206,6 +231,10 @@ void Engine::advance_to(double t) {
 }
 
 void Engine::step(double limit) {
+  if (local_) {
+    step_local(limit);
+    return;
+  }
   const std::size_t n = state_.size();
   double dt = integrator_->next_step(facts_);
   const bool last = time_ + dt >= limit;
@@ -332,6 +361,15 @@ void Engine::resort() {
 
 double Engine::kinetic_energy() const {
   double e = 0;
+  if (local_) {
+    const Particles& p = particles();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const double d = p.diameter[i], m = model_.mass(d);
+      e += 0.5 * m * (p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]) +
+           0.5 * 0.1 * m * d * d * p.omega[i] * p.omega[i];
+    }
+    return e;
+  }
   for (std::size_t i = 0; i < state_.size(); ++i) {
     const double d = state_.diameter[i], m = model_.mass(d);
     e += 0.5 * m * (state_.vx[i] * state_.vx[i] + state_.vy[i] * state_.vy[i]) +
@@ -353,6 +391,8 @@ std::size_t Engine::bytes() const {
       cap(search_) + cap(x0_) + cap(y0_) + cap(scratch_) + cap(scratch_index_) + cap(scratch_flag_);
   b += grid_.bytes() + voidage_.bytes() + pass_.bytes() + springs_.bytes() + next_springs_.bytes();
   b += integrator_->bytes();
+  b += cap(kind_) + cap(flight_) + cap(t0_) + cap(t1_) + cap(member_) + cap(deposit_cell_) +
+       cap(syncs_) + cap(near_) + cap(wake_) + boxes_.bytes();
   return b;
 }
 
@@ -360,6 +400,7 @@ void Engine::save_checkpoint(const std::string& path) const {
   std::ofstream out(path, std::ios::binary);
   if (!out) throw std::runtime_error("cannot write checkpoint " + path);
   out.write(kMagic, sizeof kMagic);
+  write_value(out, std::uint64_t(state_.size()));
   write_value(out, time_);
   write_value(out, stats_);
   write_value(out, facts_.contacts);
@@ -379,6 +420,7 @@ void Engine::save_checkpoint(const std::string& path) const {
   out.write(reinterpret_cast<const char*>(springs.data()),
             std::streamsize(count * sizeof(PairHistory::Entry)));
   integrator_->save(out);
+  if (local_) save_local(out);
   if (!out) throw std::runtime_error("failed writing checkpoint " + path);
 }
 
@@ -388,6 +430,14 @@ void Engine::load_checkpoint(const std::string& path) {
   in.read(magic, sizeof magic);
   if (!in || std::memcmp(magic, kMagic, sizeof kMagic) != 0)
     throw std::runtime_error("not a sedem checkpoint: " + path);
+  std::uint64_t members = 0;
+  read_value(in, members);
+  if (local_ && in && members <= sample_.particles.size()) {  // local steps: the members only
+    state_.resize(members);
+    search_.resize(members);
+    x0_.resize(members);
+    y0_.resize(members);
+  }
   read_value(in, time_);
   read_value(in, stats_);
   facts_ = PassFacts{};
@@ -409,6 +459,7 @@ void Engine::load_checkpoint(const std::string& path) {
           std::streamsize(count * sizeof(PairHistory::Entry)));
   springs_.assign(&springs, 1);
   integrator_->load(in);
+  if (local_) load_local(in);
   if (!in) throw std::runtime_error("truncated checkpoint " + path);
   // The lists as they were: built from the saved build positions, in the saved order.
   if (!lists_stale_) {

@@ -13,9 +13,11 @@
 #include <string>
 #include <vector>
 
+#include "core/engine/box_registry.h"
 #include "core/engine/engine_state.h"
 #include "core/engine/force_pass.h"
 #include "core/engine/forces.h"
+#include "core/engine/free_flight.h"
 #include "core/engine/instability.h"
 #include "core/engine/integrators.h"
 #include "core/engine/neighbour_grid.h"
@@ -41,6 +43,9 @@ struct EngineStats {
   std::size_t frozen = 0;        // particles frozen in the bed
   double max_overlap_ratio = 0;  // largest overlap / smaller radius seen so far
   std::int64_t list_builds = 0;  // candidate lists built (Verlet rebuilds), the first included
+  // Local time stepping: coasting windows taken, and grains that left or joined the common step.
+  std::int64_t windows = 0, engaged = 0, released = 0;
+  std::size_t members = 0;  // grains on the common step at the last step (frozen included)
 };
 
 class Engine {
@@ -67,6 +72,8 @@ class Engine {
 
   const char* integrator_name() const { return integrator_->name(); }
   int threads() const { return threads_; }
+  // Whether free grains coast on windows of their own (integrator.local_steps).
+  bool local_steps() const { return local_; }
   double freeze_height() const { return freeze_height_; }
   // Heap bytes held by the engine, its copy of the sample included.
   std::size_t bytes() const;
@@ -75,6 +82,22 @@ class Engine {
 
  private:
   void freeze_resting();
+  // Local time stepping (engine_local.cpp).
+  void start_local();
+  void step_local(double limit);
+  bool coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit);
+  FreeFlight flight_of(std::uint32_t id, const FreeFlight::Point& p) const;
+  void engage(std::uint32_t id, const FreeFlight::Point& p, bool frozen);
+  void wake_around(std::uint32_t id);
+  void anchor(std::size_t k);
+  void remove_member(std::size_t k);
+  void release_members();
+  void settle_members();
+  void index_members();
+  void move_deposit(std::uint32_t id, double x, double y);
+  Box member_box(std::size_t k) const;
+  void save_local(std::ostream& out) const;
+  void load_local(std::istream& in);
   void resort();
   void rebuild_lists();
   bool moved_beyond_margin();
@@ -105,6 +128,23 @@ class Engine {
   double margin_ = 2;  // of the candidate lists, in radii
   double time_ = 0;
   EngineStats stats_;
+
+  // Local time stepping: each grain is coasting (on its exact free trajectory `flight_` from
+  // t0_ until t1_), a member of the common step (in state_, at index member_), or settled (a
+  // frozen grain no member can reach, kept out of state_). See engine_local.cpp.
+  enum : std::uint8_t { kCoasting = 0, kMoving = 1, kFrozen = 2, kSettled = 3 };
+  bool local_ = false;
+  bool members_changed_ = false;
+  std::vector<std::uint8_t> kind_;
+  std::vector<FreeFlight> flight_;  // coasting: from t0_; members: anchor of their box in x, y
+  std::vector<double> t0_, t1_;
+  std::vector<std::uint32_t> member_, deposit_cell_;
+  std::vector<std::pair<double, std::uint32_t>> syncs_;  // min-heap of (t1_, id)
+  BoxRegistry boxes_;
+  std::vector<std::uint32_t> near_, wake_;  // scratch
+  DragEvaluator drag_;
+  double registry_cell_ = 1e-3;
+  std::size_t settled_ = 0;
 };
 
 }  // namespace sedem

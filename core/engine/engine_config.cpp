@@ -49,6 +49,15 @@ void describe(IntegratorConfig& c, Schema& s) {
   s.flag("integrator.freeze_settled", &c.freeze_settled,
          "Freeze particles resting in the bed below the lowest instrument.");
   s.number("integrator.max_step_s", &c.max_step, "s", 1, 1e-12, 1e6, "Upper bound on the step.");
+  s.flag("integrator.local_steps", &c.local_steps,
+         "exponential: a grain that can touch nothing follows its exact free trajectory over a "
+         "window of its own (space-time boxes keep windows apart), and only grains near a "
+         "contact, a wall or the bed share the common step. Off: every grain takes the common "
+         "step.");
+  s.number("integrator.max_coast_s", &c.max_coast, "s", 1, 1e-6, 1e6,
+           "exponential with local_steps: the longest window a free grain coasts with its drag "
+           "(and the voidage it feels) held constant.")
+      .min_exclusive = true;
   s.integer("integrator.threads", &c.threads, 0, 1024, "Worker threads; 0 uses every core.");
 }
 

@@ -217,7 +217,7 @@ class ExponentialIntegrator final : public Integrator {
     crossing_ = ctx_.model->contact || ctx_.model->drag == DragLaw::di_felice;
     // Before any velocity is known, the largest grain at its settling speed sets the step.
     step_ = limited(ctx_.max_radius > 0 ? ctx_.max_terminal_speed / ctx_.max_radius : 0);
-    projection_.configure(*ctx_.model, ctx_.threads, ctx_.contact_sweeps);
+    projection_.configure(*ctx_.model, ctx_.threads, ctx_.contact_sweeps, ctx_.grains);
   }
   const char* name() const override { return "exponential"; }
   double next_step(const PassFacts&) override { return step_; }
@@ -275,6 +275,12 @@ class ExponentialIntegrator final : public Integrator {
     step_ = limited(fastest(s));
   }
 
+  void refresh_step(const EngineState& s) override {
+    held_stale_ = true;
+    step_ = limited(fastest(s));
+    held_stale_ = false;
+  }
+
   void contact_facts(PassFacts& facts) const override {
     facts.contacts = facts_.touching;
     facts.max_overlap_ratio = facts_.max_overlap_ratio;
@@ -309,7 +315,9 @@ class ExponentialIntegrator final : public Integrator {
   double fastest(const EngineState& s) {
     if (!crossing_) return 0;
     constrained_.resize(s.size());
-    for (std::uint32_t p : projection_.participants()) constrained_[p] = 1;
+    const bool marked = !held_stale_ && !ctx_.members_only;
+    if (marked)
+      for (std::uint32_t p : projection_.participants()) constrained_[p] = 1;
     const ThreadSums sums =
         integrate(ctx_.threads, s.size(), sums_, [&](std::size_t i, ThreadSums& t) {
           if (s.frozen[i]) return;
@@ -319,7 +327,8 @@ class ExponentialIntegrator final : public Integrator {
           const double speed = std::sqrt(std::max(v2, settling * settling));
           t.max_radii_per_s = std::max(t.max_radii_per_s, 2 * speed / d);
         });
-    for (std::uint32_t p : projection_.participants()) constrained_[p] = 0;
+    if (marked)
+      for (std::uint32_t p : projection_.participants()) constrained_[p] = 0;
     return sums.max_radii_per_s;
   }
 
@@ -329,6 +338,7 @@ class ExponentialIntegrator final : public Integrator {
   double step_ = 0, ceiling_ = 0;
   double settling_ = 0;  // clear-water settling speed / d^2
   bool crossing_ = false;
+  bool held_stale_ = false;  // the last projection's participants no longer index the state
 };
 
 }  // namespace

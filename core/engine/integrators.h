@@ -74,6 +74,11 @@ struct IntegratorContext {
   const NeighbourGrid* grid = nullptr;
   const ForcePass* pass = nullptr;
   int contact_sweeps = 32;  // at most, per step
+  std::size_t grains = 0;   // the sample's size (sample indices run below it)
+  // Local time stepping: the state holds only the grains near a contact, few and about to
+  // part, so the step counts every moving grain at least at its settling speed (a grain a
+  // contact slowed may fall free within the step), not only the unsupported ones.
+  bool members_only = false;
 };
 
 class Integrator {
@@ -93,6 +98,9 @@ class Integrator {
   virtual void mark_touching(std::vector<double>& touching) const {
     std::fill(touching.begin(), touching.end(), 0.0);
   }
+  // The particles the state holds changed (local time stepping): the next step is chosen
+  // again from every moving particle, none of them taken as held.
+  virtual void refresh_step(const EngineState&) {}
 };
 
 std::unique_ptr<Integrator> make_integrator(const IntegratorConfig& config,

@@ -43,10 +43,24 @@ void VoidageGrid::compute(std::size_t n, const double* x, const double* y, const
     double solid = 0;
     for (int t = 0; t < threads_; ++t) solid += partial_[std::size_t(t) * cells + c];
     solid_[c] = solid * inv;
-    voidage_[c] = std::max(min_voidage_, 1.0 - solid_[c]);
-    log_voidage_[c] = std::log(voidage_[c]);
-    hindrance_[c] = std::exp(-1.7 * log_voidage_[c]);
+    refresh(c);
   }
+}
+
+void VoidageGrid::refresh(std::size_t c) {
+  voidage_[c] = std::min(1.0, std::max(min_voidage_, 1.0 - solid_[c]));
+  log_voidage_[c] = std::log(voidage_[c]);
+  hindrance_[c] = std::exp(-1.7 * log_voidage_[c]);
+}
+
+void VoidageGrid::deposit(std::size_t c, double weighted_volume) {
+  solid_[c] += weighted_volume * inverse_volume_;
+  refresh(c);
+}
+
+void VoidageGrid::set_solid(const std::vector<double>& solid) {
+  solid_ = solid;
+  for (std::size_t c = 0; c < solid_.size(); ++c) refresh(c);
 }
 
 }  // namespace sedem

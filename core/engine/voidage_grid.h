@@ -35,9 +35,17 @@ class VoidageGrid {
     return eps < min_voidage_ ? min_voidage_ : (eps > 1.0 ? 1.0 : eps);
   }
   std::size_t cell_count() const { return voidage_.size(); }
+  // Local time stepping keeps the grid up to date grain by grain instead of computing it
+  // anew each step: a grain's weighted volume (weight * volume, negative to take it out)
+  // enters or leaves cell c, whose voidage is then recomputed.
+  void deposit(std::size_t c, double weighted_volume);
+  // Solid fractions per cell, for checkpoints (set_solid recomputes the voidage from them).
+  const std::vector<double>& solid() const { return solid_; }
+  void set_solid(const std::vector<double>& solid);
   std::size_t bytes() const { return (4 * voidage_.size() + partial_.size()) * sizeof(double); }
 
  private:
+  void refresh(std::size_t c);
   std::size_t cell_of(double x, double y) const {
     long c = long((x + half_width_) * inverse_cell_), r = long(y * inverse_cell_);
     c = c < 0 ? 0 : (c >= columns_ ? columns_ - 1 : c);

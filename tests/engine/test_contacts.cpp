@@ -45,6 +45,7 @@ TEST(EngineContact, GrainRestsOnTheBottom) {
 TEST(EngineContact, RestingGrainBelowTheInstrumentsIsFrozen) {
   Scene scene = scene_with("stokes", "exponential");
   scene.integrator.freeze_settled = true;
+  scene.integrator.local_steps = false;
   const double d = 50e-6;
   Engine engine(scene, sample_of({{0, 0.5 * d + 2e-6, d}, {0.01, 0.4, d}}));
   EXPECT_GT(engine.freeze_height(), 0.1);
@@ -57,6 +58,30 @@ TEST(EngineContact, RestingGrainBelowTheInstrumentsIsFrozen) {
   engine.advance_to(2.0);
   EXPECT_EQ(engine.particles().y[0], y);
   EXPECT_EQ(engine.stats().particle_steps - before, double(engine.stats().steps - steps));
+  EXPECT_NEAR(0.5 * d - y, net_weight(d) / scene.forces.stiffness_normal,
+              1e-3 * net_weight(d) / 1e3);
+}
+
+// The same with local steps: the resting grain is frozen, then settled out of the common step
+// (nothing moving can reach it), and costs nothing; the other grain coasts on windows of its
+// own, a few syncs in a second.
+TEST(EngineContact, RestingGrainIsSettledOutOfTheLocalSteps) {
+  Scene scene = scene_with("stokes", "exponential");
+  scene.integrator.freeze_settled = true;
+  const double d = 50e-6;
+  Engine engine(scene, sample_of({{0, 0.5 * d + 2e-6, d}, {0.01, 0.4, d}}));
+  EXPECT_GT(engine.freeze_height(), 0.1);
+  EXPECT_LT(engine.freeze_height(), 0.4);
+  engine.advance_to(100.0);
+  EXPECT_EQ(engine.stats().frozen, 1u);
+  const double y = engine.particles().y[0];
+  const double before = engine.stats().particle_steps;
+  const auto steps = engine.stats().steps;
+  engine.advance_to(101.0);
+  EXPECT_EQ(engine.particles().y[0], y);
+  EXPECT_LE(engine.stats().particle_steps - before, 2.0);
+  EXPECT_GT(engine.stats().steps, steps);
+  EXPECT_EQ(engine.stats().members, 0u);
   EXPECT_NEAR(0.5 * d - y, net_weight(d) / scene.forces.stiffness_normal,
               1e-3 * net_weight(d) / 1e3);
 }

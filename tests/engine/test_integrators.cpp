@@ -54,6 +54,7 @@ TEST(ExponentialIntegrator, ConvergesToTheReferenceAsTheStepShrinks) {
   for (double factor : {30.0, 10.0, 1.0}) {  // 300x, 100x and 10x the paper's step
     Scene scene = scene_with("di_felice", "exponential");
     scene.integrator.fast_step_factor = factor;
+    scene.integrator.local_steps = false;  // the common step bounded by the factor
     Engine fast(scene, sample_of(cloud()));
     fast.advance_to(t);
     const double error = max_position_error(fast, reference, scale);
@@ -70,6 +71,7 @@ TEST(ExponentialIntegrator, ConvergesToTheReferenceAsTheStepShrinks) {
 // 12x longer.
 TEST(ExponentialIntegrator, StepGrowsOnceTheCoarseGrainHasSettled) {
   Scene scene = scene_with("stokes", "exponential");
+  scene.integrator.local_steps = false;  // the common step of the global scheme
   scene.integrator.freeze_settled = false;
   scene.integrator.crossing_fraction = 0.5;
   const double large = 60e-6, small = 5e-6;
@@ -110,6 +112,7 @@ TEST(Engine, SameSeedAndThreadsGiveTheSameBits) {
 TEST(Engine, TwoThreadRunsGiveTheSameBits) {
   Scene scene = scene_with("di_felice", "exponential", 2);
   scene.integrator.fast_step_factor = 10;
+  scene.integrator.local_steps = false;  // local steps are serial: one thread whatever is asked
   const auto grains = test::scattered(
       6000, -0.03, 0.03, 0.0, 0.004, [](int k) { return 5e-6 + 1e-6 * (k % 60); }, 21);
   Engine a(scene, sample_of(grains)), b(scene, sample_of(grains));

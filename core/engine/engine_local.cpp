@@ -1,0 +1,500 @@
+// Local time stepping of the exponential integrator (integrator.local_steps).
+//
+// A grain that touches nothing moves on an exact trajectory (free_flight.h): weight, buoyancy
+// and a drag held constant. The common step exists only so that no grain passes through
+// another between two looks. So a grain that provably cannot reach any other grain, wall or
+// the bed for a while need not share it: it *coasts* over a window of its own, evaluated
+// exactly at any time inside it, and is looked at again only at the window's end (its
+// *sync*), where its drag and the voidage it feels are taken anew.
+//
+// Proof that nothing is missed: every grain holds a box in a BoxRegistry that it cannot leave
+// before it is looked at again — a coasting grain the box its trajectory sweeps over its
+// window, a member of the common step its position with an allowance of kAllowance radii
+// (re-anchored once it has used kReanchor of them; it moves at most crossing_fraction < 1 radius
+// a step), a settled grain its disc — each widened by (1 + kSkin) radii. A window is chosen so
+// that its box overlaps no other box and no wall; the longest such window up to
+// integrator.max_coast_s, halved until it fits. A grain that cannot coast even over its own
+// crossing time joins the common step (it is *engaged*), and whatever its box then overlaps
+// joins with it: coasting grains at their exact position now, settled ones as frozen members.
+// Members that touch nothing leave again as soon as a window fits (checked every
+// kReleaseEvery steps); frozen members that no moving member can reach go back to the bed.
+//
+// The common step is the exponential integrator's, unchanged, over the members only: contacts,
+// the bed and freezing are exactly those of the global scheme. Syncs are taken in time order
+// from a heap; a step of the members ends early at a sync that engages, so that every grain
+// joins the common step at the members' time. The voidage grid is kept up to date grain by
+// grain (each sync or member step moves the grain's deposit when it changes cell), instead of
+// being computed anew each step. The scheme is serial: its work is in syncs of O(log n) each,
+// taken in one order, so a run is the same whatever the thread count.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <istream>
+#include <numeric>
+#include <ostream>
+
+#include "core/engine/engine.h"
+#include "core/physics/stokes.h"
+
+namespace sedem {
+
+namespace {
+
+constexpr double kSkin = 0.5;        // boxes are widened by (1 + kSkin) radii
+constexpr double kAllowance = 3.0;   // a member's box lets it travel this many radii
+constexpr double kReanchor = 1.0;    // and moves with it once it has travelled this many
+constexpr double kConverged = 1e-3;  // relative gap to the terminal velocity of a long window
+constexpr double kResponses = 8.0;   // response times of a window still converging
+constexpr std::int64_t kReleaseEvery = 16;
+constexpr std::uint32_t kNoMember = 0xFFFFFFFF;
+
+using Sync = std::pair<double, std::uint32_t>;
+constexpr auto kLater = std::greater<Sync>{};
+
+template <class T>
+void put(std::ostream& out, const std::vector<T>& v) {
+  const std::uint64_t n = v.size();
+  out.write(reinterpret_cast<const char*>(&n), sizeof n);
+  out.write(reinterpret_cast<const char*>(v.data()), std::streamsize(n * sizeof(T)));
+}
+
+template <class T>
+void get(std::istream& in, std::vector<T>& v) {
+  std::uint64_t n = 0;
+  in.read(reinterpret_cast<char*>(&n), sizeof n);
+  if (!in || n != v.size()) throw std::runtime_error("checkpoint does not match this sample");
+  in.read(reinterpret_cast<char*>(v.data()), std::streamsize(n * sizeof(T)));
+}
+
+}  // namespace
+
+FreeFlight Engine::flight_of(std::uint32_t id, const FreeFlight::Point& p) const {
+  const Particles& s = sample_.particles;
+  const double d = s.diameter[id], mass = model_.mass(d);
+  const double c = drag_.coefficient(d, s.weight[id], std::hypot(p.vx, p.vy), p.x, p.y);
+  FreeFlight f{p.x, p.y, p.vx, p.vy, 0, 0, 0};
+  const double force = model_.gravity_force(d);
+  if (c > 0) {
+    f.rate = c / mass;
+    f.uy = force / c;
+  } else {
+    f.uy = force / mass;
+  }
+  return f;
+}
+
+// The longest window (up to max_coast_s) over which grain id, at p at time t, can coast
+// without its box meeting another or a wall; with `commit`, takes it. False: none as long as
+// its own crossing time (and nothing was changed).
+bool Engine::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit) {
+  const FreeFlight f = flight_of(id, p);
+  const double r = 0.5 * sample_.particles.diameter[id], pad = r * (1 + kSkin);
+  const double hw = model_.half_width;
+  double window = scene_.integrator.max_coast;
+  const double gap = std::hypot(f.vx - f.ux, f.vy - f.uy), terminal = std::hypot(f.ux, f.uy);
+  // Di Felice drag depends on the speed: far from its terminal velocity a grain's drag is
+  // taken again after a few response times, as the global step would.
+  if (model_.drag == DragLaw::di_felice && f.rate > 0 && gap > kConverged * terminal)
+    window = std::min(window, kResponses / f.rate);
+  auto box = [&](double w) {
+    const FreeFlight::Range g = f.sweep(w);
+    return Box{g.x0 - pad, g.x1 + pad, g.y0 - pad, g.y1 + pad};
+  };
+  auto take = [&](double w) {
+    if (!commit) return true;
+    flight_[id] = f;
+    t0_[id] = t;
+    t1_[id] = t + w;
+    kind_[id] = kCoasting;
+    if (model_.contact) boxes_.set(id, box(w), kCoasting);
+    syncs_.emplace_back(t + w, id);
+    std::push_heap(syncs_.begin(), syncs_.end(), kLater);
+    ++stats_.windows;
+    return true;
+  };
+  if (!model_.contact) return take(window);
+
+  const double speed = f.rate > 0 ? std::max(std::hypot(f.vx, f.vy), terminal)
+                                  : std::hypot(f.vx, f.vy) + terminal * window;
+  if (speed > 0) window = std::min(window, 2 * registry_cell_ / speed);
+  const double shortest =
+      speed > 0 ? std::min(window, scene_.integrator.crossing_fraction * r / speed) : window;
+  near_.clear();
+  boxes_.overlapping(box(window), id, [&](std::uint32_t j) { near_.push_back(j); });
+  for (double w = window; w >= shortest; w *= 0.5) {
+    const Box b = box(w);
+    if (b.x0 <= -hw || b.x1 >= hw || b.y0 <= 0) continue;
+    bool clear = true;
+    for (std::uint32_t j : near_)
+      if (b.overlaps(boxes_.box(j))) {
+        clear = false;
+        break;
+      }
+    if (clear) return take(w);
+  }
+  return false;
+}
+
+Box Engine::member_box(std::size_t k) const {
+  const double r = 0.5 * state_.diameter[k];
+  const double reach = r * (1 + kSkin) + (state_.frozen[k] ? 0.0 : kAllowance * r);
+  return Box{state_.x[k] - reach, state_.x[k] + reach, state_.y[k] - reach, state_.y[k] + reach};
+}
+
+void Engine::move_deposit(std::uint32_t id, double x, double y) {
+  if (model_.drag != DragLaw::di_felice) return;
+  const std::size_t c = voidage_.cell(x, y);
+  if (c == deposit_cell_[id]) return;
+  const double d = sample_.particles.diameter[id];
+  const double volume = sample_.particles.weight[id] * model_.volume(d);
+  voidage_.deposit(deposit_cell_[id], -volume);
+  voidage_.deposit(c, volume);
+  deposit_cell_[id] = std::uint32_t(c);
+}
+
+// Grain id joins the common step at p (at the members' time): appended to the state, its box
+// registered by wake_around.
+void Engine::engage(std::uint32_t id, const FreeFlight::Point& p, bool frozen) {
+  if (kind_[id] == kMoving || kind_[id] == kFrozen) return;  // a member already
+  const Particles& s = sample_.particles;
+  const std::size_t k = state_.size();
+  state_.resize(k + 1);
+  state_.x[k] = p.x;
+  state_.y[k] = p.y;
+  state_.vx[k] = frozen ? 0.0 : p.vx;
+  state_.vy[k] = frozen ? 0.0 : p.vy;
+  state_.omega[k] = 0;
+  state_.diameter[k] = s.diameter[id];
+  state_.weight[k] = s.weight[id];
+  state_.origin[k] = id;
+  state_.frozen[k] = frozen ? 1 : 0;
+  const double reach = model_.lubrication_reach();
+  search_.push_back(0.5 * s.diameter[id] * (1 + reach + model_.skin + margin_));
+  x0_.push_back(p.x);
+  y0_.push_back(p.y);
+  forces_.stiffness.push_back(0.0);
+  member_[id] = std::uint32_t(k);
+  kind_[id] = frozen ? kFrozen : kMoving;
+  move_deposit(id, p.x, p.y);
+  members_changed_ = true;
+  ++stats_.engaged;
+  wake_.push_back(id);
+}
+
+// Registers the boxes of the grains just engaged; whatever a moving one's box overlaps joins
+// too (coasting grains where they are now, settled ones frozen), until nothing more does.
+void Engine::wake_around(std::uint32_t first) {
+  if (first != kNoMember) wake_.push_back(first);
+  std::vector<std::uint32_t> found;
+  while (!wake_.empty()) {
+    const std::uint32_t id = wake_.back();
+    wake_.pop_back();
+    const std::size_t k = member_[id];
+    anchor(k);
+    if (state_.frozen[k]) continue;
+    found.clear();
+    boxes_.overlapping(boxes_.box(id), id, [&](std::uint32_t j) {
+      if (kind_[j] == kCoasting || kind_[j] == kSettled) found.push_back(j);
+    });
+    std::sort(found.begin(), found.end());
+    for (std::uint32_t j : found) {
+      if (kind_[j] == kCoasting) {
+        const FreeFlight::Point p = flight_[j].at(time_ - t0_[j]);
+        engage(j, p, false);
+      } else {
+        const FreeFlight& f = flight_[j];
+        --settled_;
+        engage(j, FreeFlight::Point{f.x, f.y, 0, 0}, true);
+      }
+    }
+  }
+}
+
+void Engine::anchor(std::size_t k) {
+  const std::uint32_t id = state_.origin[k];
+  flight_[id].x = state_.x[k];
+  flight_[id].y = state_.y[k];
+  if (model_.contact) boxes_.set(id, member_box(k), state_.frozen[k] ? kFrozen : kMoving);
+}
+
+void Engine::remove_member(std::size_t k) {
+  const std::size_t last = state_.size() - 1;
+  if (k != last) {
+    for (auto* v : {&state_.x, &state_.y, &state_.vx, &state_.vy, &state_.omega, &state_.diameter,
+                    &state_.weight, &search_, &x0_, &y0_, &forces_.stiffness})
+      (*v)[k] = (*v)[last];
+    state_.origin[k] = state_.origin[last];
+    state_.frozen[k] = state_.frozen[last];
+    member_[state_.origin[k]] = std::uint32_t(k);
+  }
+  state_.resize(last);
+  search_.resize(last);
+  x0_.resize(last);
+  y0_.resize(last);
+  forces_.stiffness.resize(last);
+  members_changed_ = true;
+}
+
+// Moving members that touch nothing coast again where a window fits.
+void Engine::release_members() {
+  std::vector<std::uint32_t> free;
+  for (std::size_t k = 0; k < state_.size(); ++k)
+    if (!state_.frozen[k] && forces_.stiffness[k] == 0) free.push_back(state_.origin[k]);
+  std::sort(free.begin(), free.end());
+  for (std::uint32_t id : free) {
+    const std::size_t k = member_[id];
+    const FreeFlight::Point p{state_.x[k], state_.y[k], state_.vx[k], state_.vy[k]};
+    if (!coast(id, time_, p, true)) continue;
+    remove_member(k);
+    member_[id] = kNoMember;
+    ++stats_.released;
+  }
+}
+
+// Frozen members that no moving member can reach go back to the bed, out of the state.
+void Engine::settle_members() {
+  std::vector<std::uint32_t> frozen;
+  for (std::size_t k = 0; k < state_.size(); ++k)
+    if (state_.frozen[k]) {
+      anchor(k);
+      frozen.push_back(state_.origin[k]);
+    }
+  std::sort(frozen.begin(), frozen.end());
+  for (std::uint32_t id : frozen) {
+    bool reachable = false;
+    boxes_.overlapping(boxes_.box(id), id,
+                       [&](std::uint32_t j) { reachable = reachable || kind_[j] == kMoving; });
+    if (reachable) continue;
+    const std::size_t k = member_[id];
+    flight_[id] = FreeFlight{state_.x[k], state_.y[k], 0, 0, 0, 0, 0};
+    kind_[id] = kSettled;
+    ++settled_;
+    boxes_.set(id, boxes_.box(id), kSettled);
+    remove_member(k);
+    member_[id] = kNoMember;
+  }
+}
+
+void Engine::index_members() {
+  for (std::size_t k = 0; k < state_.size(); ++k) member_[state_.origin[k]] = std::uint32_t(k);
+}
+
+void Engine::start_local() {
+  const Particles& s = sample_.particles;
+  const std::size_t n = s.size();
+  kind_.assign(n, kCoasting);
+  flight_.assign(n, FreeFlight{});
+  t0_.assign(n, 0.0);
+  t1_.assign(n, 0.0);
+  member_.assign(n, kNoMember);
+  deposit_cell_.assign(n, 0);
+  syncs_.clear();
+  const Cylinder& cyl = scene_.cylinder;
+  double dmax = 0;
+  for (double d : s.diameter) dmax = std::max(dmax, d);
+  // Cells about twice the mean spacing: a box spans a few of them and each holds a few boxes.
+  const double spacing =
+      std::sqrt(2 * cyl.half_width() * cyl.height / double(std::max<std::size_t>(n, 1)));
+  registry_cell_ = std::max(2 * spacing, 4 * dmax);
+  if (model_.contact) boxes_.configure(registry_cell_, cyl.half_width(), cyl.height, n);
+  if (model_.drag == DragLaw::di_felice) {
+    voidage_.compute(n, state_.x.data(), state_.y.data(), state_.diameter.data(),
+                     state_.weight.data());
+    for (std::uint32_t id = 0; id < n; ++id)
+      deposit_cell_[id] = std::uint32_t(voidage_.cell(state_.x[id], state_.y[id]));
+  }
+  // Every grain first holds its disc, as if settled, so that the first windows see them all.
+  std::vector<FreeFlight::Point> start(n);
+  for (std::uint32_t id = 0; id < n; ++id) {
+    start[id] = {state_.x[id], state_.y[id], state_.vx[id], state_.vy[id]};
+    flight_[id] = FreeFlight{start[id].x, start[id].y, start[id].vx, start[id].vy, 0, 0, 0};
+    const double pad = 0.5 * s.diameter[id] * (1 + kSkin);
+    if (model_.contact)
+      boxes_.set(id,
+                 Box{start[id].x - pad, start[id].x + pad, start[id].y - pad, start[id].y + pad},
+                 kCoasting);
+  }
+  state_.resize(0);
+  search_.clear();
+  x0_.clear();
+  y0_.clear();
+  forces_.stiffness.clear();
+  for (std::uint32_t id = 0; id < n; ++id) {
+    if (kind_[id] != kCoasting) continue;  // engaged by a neighbour already
+    if (coast(id, 0.0, start[id], true)) continue;
+    engage(id, start[id], false);
+    wake_around(kNoMember);
+  }
+  index_members();
+  lists_stale_ = true;
+  members_changed_ = false;
+  integrator_->refresh_step(state_);
+  stats_.members = state_.size();
+}
+
+void Engine::step_local(double limit) {
+  std::size_t moving = 0;
+  for (std::uint8_t f : state_.frozen) moving += f == 0;
+  const double dt = moving ? integrator_->next_step(facts_) : scene_.integrator.max_step;
+  double target = time_ + dt >= limit ? limit : time_ + dt;
+  std::uint32_t failed = kNoMember;
+  FreeFlight::Point failed_at{};
+  while (!syncs_.empty() && syncs_.front().first <= target) {
+    const auto [t, id] = syncs_.front();
+    std::pop_heap(syncs_.begin(), syncs_.end(), kLater);
+    syncs_.pop_back();
+    if (kind_[id] != kCoasting || t1_[id] != t) continue;  // engaged since: stale
+    const FreeFlight::Point p = flight_[id].at(t - t0_[id]);
+    if (!std::isfinite(p.x + p.y + p.vx + p.vy))
+      throw InstabilityError(sample_.particles.id[id], t, "position", p.x);
+    move_deposit(id, p.x, p.y);
+    stats_.particle_steps += 1;
+    if (!coast(id, t, p, true)) {
+      failed = id;
+      failed_at = p;
+      target = t;
+      break;
+    }
+  }
+
+  if (moving && target > time_) {
+    if (lists_stale_) {
+      if (stats_.steps - resorted_at_ >= 16) {
+        resort();
+        resorted_at_ = stats_.steps;
+      }
+      rebuild_lists();
+      index_members();
+    }
+    Blowup blowup;
+    integrator_->advance(state_, forces_, target - time_, blowup);
+    integrator_->contact_facts(facts_);
+    stats_.particle_steps += double(moving);
+    stats_.contacts = facts_.contacts;
+    stats_.max_overlap_ratio = std::max(stats_.max_overlap_ratio, facts_.max_overlap_ratio);
+    if (blowup.found && std::getenv("SEDEM_DEBUG_LOCAL")) {
+      const std::uint32_t id = blowup.particle;
+      const std::size_t k = member_[id];
+      std::fprintf(stderr,
+                   "blowup id %u member %zu x=%g y=%g vx=%g vy=%g frozen=%d dt=%g n=%zu moving=%zu "
+                   "anchor=%g,%g\n",
+                   id, k, state_.x[k], state_.y[k], state_.vx[k], state_.vy[k],
+                   int(state_.frozen[k]), target - time_, state_.size(), moving, flight_[id].x,
+                   flight_[id].y);
+    }
+    if (blowup.found)
+      throw InstabilityError(sample_.particles.id[blowup.particle], target, blowup.quantity,
+                             blowup.value);
+    lists_stale_ = lists_stale_ || moved_beyond_margin();
+    for (std::size_t k = 0; k < state_.size(); ++k)
+      if (!state_.frozen[k]) move_deposit(state_.origin[k], state_.x[k], state_.y[k]);
+  }
+  stats_.last_step = target - time_;
+  time_ = target;
+  stats_.steps += 1;
+
+  if (moving) {
+    // Which members touch something, from this step's projection, before any joins or leaves.
+    if (stats_.steps % kReleaseEvery == 0) integrator_->mark_touching(forces_.stiffness);
+    // Members that used their allowance take a new box; whatever it reaches joins them.
+    for (std::size_t k = 0; k < state_.size(); ++k) {
+      if (state_.frozen[k]) continue;
+      const std::uint32_t id = state_.origin[k];
+      const double moved = std::hypot(state_.x[k] - flight_[id].x, state_.y[k] - flight_[id].y);
+      if (moved > kReanchor * 0.5 * state_.diameter[k]) wake_.push_back(id);
+    }
+    wake_around(kNoMember);
+    if (freeze_height_ > 0 && stats_.steps % 64 == 0) {
+      freeze_resting();
+      settle_members();
+      stats_.frozen = settled_;
+      for (std::uint8_t f : state_.frozen) stats_.frozen += f;
+    }
+    if (stats_.steps % kReleaseEvery == 0) release_members();
+  }
+  if (failed != kNoMember && kind_[failed] == kCoasting) {  // unless a member woke it already
+    engage(failed, failed_at, false);
+    wake_around(kNoMember);
+  }
+  if (members_changed_) {
+    lists_stale_ = true;
+    index_members();
+    integrator_->refresh_step(state_);
+    members_changed_ = false;
+  }
+  stats_.members = state_.size();
+  if (std::getenv("SEDEM_DEBUG_LOCAL")) {
+    for (std::uint32_t id = 0; id < kind_.size(); ++id) {
+      const double r = 0.5 * sample_.particles.diameter[id];
+      if (kind_[id] == kCoasting) {
+        const auto p = flight_[id].at(time_ - t0_[id]);
+        const Box& b = boxes_.box(id);
+        if (p.x - r < b.x0 || p.x + r > b.x1 || p.y - r < b.y0 || p.y + r > b.y1 || p.y < r)
+          std::fprintf(
+              stderr,
+              "t=%g coaster %u out of box: y=%g box y0=%g t0=%g t1=%g vy=%g uy=%g rate=%g\n", time_,
+              id, p.y, b.y0, t0_[id], t1_[id], flight_[id].vy, flight_[id].uy, flight_[id].rate);
+      } else if (kind_[id] != kSettled) {
+        const std::size_t k = member_[id];
+        if (state_.origin[k] != id)
+          std::fprintf(stderr, "t=%g member index broken %u\n", time_, id);
+        if (state_.y[k] < 0.5 * r)
+          std::fprintf(stderr, "t=%g member %u low y=%g r=%g frozen=%d vy=%g dt=%g\n", time_, id,
+                       state_.y[k], r, int(state_.frozen[k]), state_.vy[k], stats_.last_step);
+      }
+    }
+  }
+}
+
+void Engine::save_local(std::ostream& out) const {
+  put(out, kind_);
+  put(out, flight_);
+  put(out, t0_);
+  put(out, t1_);
+  put(out, deposit_cell_);
+  put(out, voidage_.solid());
+  std::vector<Box> boxes(kind_.size());
+  std::vector<std::uint8_t> kinds(kind_.size(), BoxRegistry::kNone);
+  if (model_.contact)
+    for (std::uint32_t id = 0; id < kind_.size(); ++id)
+      if (boxes_.has(id)) {
+        boxes[id] = boxes_.box(id);
+        kinds[id] = boxes_.kind(id);
+      }
+  put(out, boxes);
+  put(out, kinds);
+}
+
+void Engine::load_local(std::istream& in) {
+  get(in, kind_);
+  get(in, flight_);
+  get(in, t0_);
+  get(in, t1_);
+  get(in, deposit_cell_);
+  std::vector<double> solid(voidage_.solid().size());
+  get(in, solid);
+  voidage_.set_solid(solid);
+  std::vector<Box> boxes(kind_.size());
+  std::vector<std::uint8_t> kinds(kind_.size());
+  get(in, boxes);
+  get(in, kinds);
+  if (model_.contact) {
+    const Cylinder& cyl = scene_.cylinder;
+    boxes_.configure(registry_cell_, cyl.half_width(), cyl.height, kind_.size());
+    for (std::uint32_t id = 0; id < kind_.size(); ++id)
+      if (kinds[id] != BoxRegistry::kNone) boxes_.set(id, boxes[id], kinds[id]);
+  }
+  syncs_.clear();
+  for (std::uint32_t id = 0; id < kind_.size(); ++id)
+    if (kind_[id] == kCoasting) syncs_.emplace_back(t1_[id], id);
+  std::make_heap(syncs_.begin(), syncs_.end(), kLater);
+  member_.assign(kind_.size(), kNoMember);
+  index_members();
+  settled_ = std::size_t(std::count(kind_.begin(), kind_.end(), kSettled));
+  forces_.stiffness.assign(state_.size(), 0.0);
+}
+
+}  // namespace sedem
