@@ -207,7 +207,7 @@ const Particles& Engine::particles() const {
       for (std::uint32_t id = 0; id < kind_.size(); ++id) {
         if (kind_[id] == kMoving || kind_[id] == kFrozen) continue;
         const FreeFlight::Point q = kind_[id] == kCoasting
-                                        ? flight_[id].at(time_ - t0_[id])
+                                        ? coasting_at(id, time_)
                                         : FreeFlight::Point{flight_[id].x, flight_[id].y, 0, 0};
         p.x[id] = q.x;
         p.y[id] = q.y;

@@ -85,8 +85,10 @@ class Engine {
   // Local time stepping (engine_local.cpp).
   void start_local();
   void step_local(double limit);
-  bool coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit);
+  bool coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit,
+             double at_least = 1.0);
   FreeFlight flight_of(std::uint32_t id, const FreeFlight::Point& p) const;
+  FreeFlight::Point coasting_at(std::uint32_t id, double t) const;
   void engage(std::uint32_t id, const FreeFlight::Point& p, bool frozen);
   void wake_around(std::uint32_t id);
   void anchor(std::size_t k);
@@ -141,9 +143,9 @@ class Engine {
   std::vector<std::uint32_t> member_, deposit_cell_;
   std::vector<std::pair<double, std::uint32_t>> syncs_;  // min-heap of (t1_, id)
   BoxRegistry boxes_;
-  std::vector<std::uint32_t> near_, wake_;  // scratch
+  std::vector<std::uint32_t> near_, wake_, failed_;  // scratch
   DragEvaluator drag_;
-  double registry_cell_ = 1e-3;
+  double registry_cell_ = 1e-3, travel_ = 1e-3;
   std::size_t settled_ = 0;
 };
 

@@ -29,8 +29,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <functional>
 #include <istream>
 #include <numeric>
@@ -48,7 +46,9 @@ constexpr double kAllowance = 3.0;   // a member's box lets it travel this many 
 constexpr double kReanchor = 1.0;    // and moves with it once it has travelled this many
 constexpr double kConverged = 1e-3;  // relative gap to the terminal velocity of a long window
 constexpr double kResponses = 8.0;   // response times of a window still converging
+constexpr double kTravel = 0.5;      // longest travel of a window, in mean spacings
 constexpr std::int64_t kReleaseEvery = 16;
+constexpr double kReleaseMargin = 4.0;  // a member leaves for a window this many crossing times
 constexpr std::uint32_t kNoMember = 0xFFFFFFFF;
 
 using Sync = std::pair<double, std::uint32_t>;
@@ -89,7 +89,8 @@ FreeFlight Engine::flight_of(std::uint32_t id, const FreeFlight::Point& p) const
 // The longest window (up to max_coast_s) over which grain id, at p at time t, can coast
 // without its box meeting another or a wall; with `commit`, takes it. False: none as long as
 // its own crossing time (and nothing was changed).
-bool Engine::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit) {
+bool Engine::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit,
+                   double at_least) {
   const FreeFlight f = flight_of(id, p);
   const double r = 0.5 * sample_.particles.diameter[id], pad = r * (1 + kSkin);
   const double hw = model_.half_width;
@@ -119,9 +120,12 @@ bool Engine::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool 
 
   const double speed = f.rate > 0 ? std::max(std::hypot(f.vx, f.vy), terminal)
                                   : std::hypot(f.vx, f.vy) + terminal * window;
-  if (speed > 0) window = std::min(window, 2 * registry_cell_ / speed);
+  // A window's box stays within a fraction of the mean spacing: long boxes would crowd the
+  // space the others need for theirs and engage grains that are nowhere near each other.
+  if (speed > 0) window = std::min(window, travel_ / speed);
   const double shortest =
-      speed > 0 ? std::min(window, scene_.integrator.crossing_fraction * r / speed) : window;
+      speed > 0 ? std::min(window, at_least * scene_.integrator.crossing_fraction * r / speed)
+                : window;
   near_.clear();
   boxes_.overlapping(box(window), id, [&](std::uint32_t j) { near_.push_back(j); });
   for (double w = window; w >= shortest; w *= 0.5) {
@@ -136,6 +140,18 @@ bool Engine::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool 
     if (clear) return take(w);
   }
   return false;
+}
+
+// A coasting grain at time t. Inside its window, exactly. Before it (a grain synced ahead of the
+// members within their step, joining them at their time), along the straight line of its
+// velocity at the window's start: run backwards, the exponential would amplify the tiny gap to
+// its terminal velocity by e^(dt/tau); that far back (less than a member step, so less than a
+// crossing time) the grain is at its terminal velocity to round-off.
+FreeFlight::Point Engine::coasting_at(std::uint32_t id, double t) const {
+  const FreeFlight& f = flight_[id];
+  const double s = t - t0_[id];
+  if (s >= 0) return f.at(s);
+  return {f.x + s * f.vx, f.y + s * f.vy, f.vx, f.vy};
 }
 
 Box Engine::member_box(std::size_t k) const {
@@ -202,8 +218,7 @@ void Engine::wake_around(std::uint32_t first) {
     std::sort(found.begin(), found.end());
     for (std::uint32_t j : found) {
       if (kind_[j] == kCoasting) {
-        const FreeFlight::Point p = flight_[j].at(time_ - t0_[j]);
-        engage(j, p, false);
+        engage(j, coasting_at(j, time_), false);
       } else {
         const FreeFlight& f = flight_[j];
         --settled_;
@@ -247,7 +262,9 @@ void Engine::release_members() {
   for (std::uint32_t id : free) {
     const std::size_t k = member_[id];
     const FreeFlight::Point p{state_.x[k], state_.y[k], state_.vx[k], state_.vy[k]};
-    if (!coast(id, time_, p, true)) continue;
+    // Only where a window several crossing times long fits: a grain just clear of another
+    // would be back at its next sync.
+    if (!coast(id, time_, p, true, kReleaseMargin)) continue;
     remove_member(k);
     member_[id] = kNoMember;
     ++stats_.released;
@@ -298,7 +315,8 @@ void Engine::start_local() {
   // Cells about twice the mean spacing: a box spans a few of them and each holds a few boxes.
   const double spacing =
       std::sqrt(2 * cyl.half_width() * cyl.height / double(std::max<std::size_t>(n, 1)));
-  registry_cell_ = std::max(2 * spacing, 4 * dmax);
+  travel_ = kTravel * spacing;
+  registry_cell_ = std::max(spacing, 4 * dmax);
   if (model_.contact) boxes_.configure(registry_cell_, cyl.half_width(), cyl.height, n);
   if (model_.drag == DragLaw::di_felice) {
     voidage_.compute(n, state_.x.data(), state_.y.data(), state_.diameter.data(),
@@ -336,12 +354,19 @@ void Engine::start_local() {
 }
 
 void Engine::step_local(double limit) {
-  std::size_t moving = 0;
-  for (std::uint8_t f : state_.frozen) moving += f == 0;
-  const double dt = moving ? integrator_->next_step(facts_) : scene_.integrator.max_step;
+  auto count_moving = [&] {
+    std::size_t m = 0;
+    for (std::uint8_t f : state_.frozen) m += f == 0;
+    return m;
+  };
+  std::size_t moving = count_moving();
+  double dt = moving ? integrator_->next_step(facts_) : scene_.integrator.max_step;
   double target = time_ + dt >= limit ? limit : time_ + dt;
-  std::uint32_t failed = kNoMember;
-  FreeFlight::Point failed_at{};
+  // Syncs due within the step, in time order. A grain that cannot coast on joins the members
+  // at their time, before they step, where its last window put it then (coasting_at). So no
+  // member step is cut short by a sync (steps of a few ns would turn the projection's
+  // corrections into runaway speeds).
+  failed_.clear();
   while (!syncs_.empty() && syncs_.front().first <= target) {
     const auto [t, id] = syncs_.front();
     std::pop_heap(syncs_.begin(), syncs_.end(), kLater);
@@ -352,12 +377,21 @@ void Engine::step_local(double limit) {
       throw InstabilityError(sample_.particles.id[id], t, "position", p.x);
     move_deposit(id, p.x, p.y);
     stats_.particle_steps += 1;
-    if (!coast(id, t, p, true)) {
-      failed = id;
-      failed_at = p;
-      target = t;
-      break;
-    }
+    if (coast(id, t, p, true)) continue;
+    t1_[id] = HUGE_VAL;  // its heap entry, if any, is stale
+    failed_.push_back(id);
+  }
+  if (!failed_.empty()) {
+    for (std::uint32_t id : failed_)
+      if (kind_[id] == kCoasting) engage(id, coasting_at(id, time_), false);
+    wake_around(kNoMember);
+    lists_stale_ = true;
+    index_members();
+    integrator_->refresh_step(state_);
+    members_changed_ = false;
+    moving = count_moving();
+    dt = moving ? integrator_->next_step(facts_) : scene_.integrator.max_step;
+    target = time_ + dt >= limit ? limit : time_ + dt;
   }
 
   if (moving && target > time_) {
@@ -375,16 +409,6 @@ void Engine::step_local(double limit) {
     stats_.particle_steps += double(moving);
     stats_.contacts = facts_.contacts;
     stats_.max_overlap_ratio = std::max(stats_.max_overlap_ratio, facts_.max_overlap_ratio);
-    if (blowup.found && std::getenv("SEDEM_DEBUG_LOCAL")) {
-      const std::uint32_t id = blowup.particle;
-      const std::size_t k = member_[id];
-      std::fprintf(stderr,
-                   "blowup id %u member %zu x=%g y=%g vx=%g vy=%g frozen=%d dt=%g n=%zu moving=%zu "
-                   "anchor=%g,%g\n",
-                   id, k, state_.x[k], state_.y[k], state_.vx[k], state_.vy[k],
-                   int(state_.frozen[k]), target - time_, state_.size(), moving, flight_[id].x,
-                   flight_[id].y);
-    }
     if (blowup.found)
       throw InstabilityError(sample_.particles.id[blowup.particle], target, blowup.quantity,
                              blowup.value);
@@ -415,10 +439,6 @@ void Engine::step_local(double limit) {
     }
     if (stats_.steps % kReleaseEvery == 0) release_members();
   }
-  if (failed != kNoMember && kind_[failed] == kCoasting) {  // unless a member woke it already
-    engage(failed, failed_at, false);
-    wake_around(kNoMember);
-  }
   if (members_changed_) {
     lists_stale_ = true;
     index_members();
@@ -426,27 +446,6 @@ void Engine::step_local(double limit) {
     members_changed_ = false;
   }
   stats_.members = state_.size();
-  if (std::getenv("SEDEM_DEBUG_LOCAL")) {
-    for (std::uint32_t id = 0; id < kind_.size(); ++id) {
-      const double r = 0.5 * sample_.particles.diameter[id];
-      if (kind_[id] == kCoasting) {
-        const auto p = flight_[id].at(time_ - t0_[id]);
-        const Box& b = boxes_.box(id);
-        if (p.x - r < b.x0 || p.x + r > b.x1 || p.y - r < b.y0 || p.y + r > b.y1 || p.y < r)
-          std::fprintf(
-              stderr,
-              "t=%g coaster %u out of box: y=%g box y0=%g t0=%g t1=%g vy=%g uy=%g rate=%g\n", time_,
-              id, p.y, b.y0, t0_[id], t1_[id], flight_[id].vy, flight_[id].uy, flight_[id].rate);
-      } else if (kind_[id] != kSettled) {
-        const std::size_t k = member_[id];
-        if (state_.origin[k] != id)
-          std::fprintf(stderr, "t=%g member index broken %u\n", time_, id);
-        if (state_.y[k] < 0.5 * r)
-          std::fprintf(stderr, "t=%g member %u low y=%g r=%g frozen=%d vy=%g dt=%g\n", time_, id,
-                       state_.y[k], r, int(state_.frozen[k]), state_.vy[k], stats_.last_step);
-      }
-    }
-  }
 }
 
 void Engine::save_local(std::ostream& out) const {
