@@ -77,17 +77,23 @@ class Problem {
     omega_ = 30.0 * std::max(1.0, (j / sigma).colwise().norm().maxCoeff());
   }
 
-  Eigen::VectorXd solve(const Eigen::VectorXd& measured, double mu) const {
+  // `prior`, if given, shifts the smoothing term to ||sqrt(lambda) L x - prior||^2.
+  Eigen::VectorXd solve(const Eigen::VectorXd& measured, double mu,
+                        const Eigen::VectorXd& start = {},
+                        const Eigen::VectorXd& prior = {}) const {
     const Eigen::Index m = j_.rows(), r = l_.rows(), n = j_.cols();
     Eigen::MatrixXd a(m + r + 1, n);
     Eigen::VectorXd b(m + r + 1);
     a.topRows(m) = j_ / sigma_;
     b.head(m) = (measured - offset_) / sigma_;
     a.middleRows(m, r) = std::sqrt(mu * scale_) * l_;
-    b.segment(m, r).setZero();
+    if (prior.size() == r)
+      b.segment(m, r) = prior;
+    else
+      b.segment(m, r).setZero();
     a.row(m + r).setConstant(omega_);
     b(m + r) = omega_;
-    return nnls(a, b).x;
+    return nnls(a, b, start).x;
   }
 
   double chi2(const Eigen::VectorXd& measured, const Eigen::VectorXd& x) const {
@@ -100,13 +106,14 @@ class Problem {
     Eigen::VectorXd x;
     double mu = 0, chi2 = 0, target = 0, floor = 0;
   };
-  Choice choose(const Eigen::VectorXd& measured, double tau) const {
+  Choice choose(const Eigen::VectorXd& measured, double tau,
+                const Eigen::VectorXd& start = {}) const {
     constexpr double kMuMin = 1e-10, kMuMax = 1e6;
     Choice c;
-    const Eigen::VectorXd rough = solve(measured, kMuMin);
+    const Eigen::VectorXd rough = solve(measured, kMuMin, start);
     c.floor = chi2(measured, rough);
     c.target = std::pow(tau * std::sqrt(double(measured.size())) + std::sqrt(c.floor), 2);
-    const Eigen::VectorXd smooth = solve(measured, kMuMax);
+    const Eigen::VectorXd smooth = solve(measured, kMuMax, start);
     if (chi2(measured, smooth) <= c.target) {
       c.x = smooth;
       c.mu = kMuMax;
@@ -114,9 +121,9 @@ class Problem {
       double lo = std::log(kMuMin), hi = std::log(kMuMax);
       c.x = rough;
       c.mu = kMuMin;
-      for (int it = 0; it < 36; ++it) {
+      for (int it = 0; it < 24; ++it) {
         const double mid = 0.5 * (lo + hi);
-        const Eigen::VectorXd x = solve(measured, std::exp(mid));
+        const Eigen::VectorXd x = solve(measured, std::exp(mid), c.x);
         if (chi2(measured, x) <= c.target) {
           lo = mid;
           c.x = x;
@@ -129,6 +136,9 @@ class Problem {
     c.chi2 = chi2(measured, c.x);
     return c;
   }
+
+ public:
+  Eigen::Index smoothing_rows() const { return l_.rows(); }
 
  private:
   Eigen::MatrixXd j_, l_;
@@ -265,10 +275,13 @@ InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<M
   out.shares.assign(x.data(), x.data() + x.size());
   out.percent_finer = curve_of(x);
 
-  // The band: a parametric bootstrap of the reading noise. Each replica adds to the fitted
-  // readings an error uniform over one resolution step (what rounding to the graduation
-  // leaves), is inverted again with its own discrepancy-principle lambda on the model
-  // linearised at the fit, and the band is the pointwise quantiles of the replicas' curves.
+  // The band: randomize-then-optimize sampling of the posterior that the objective stands
+  // for (Gaussian reading noise of sigma, a Gaussian smoothness prior of weight lambda,
+  // x >= 0), on the model linearised at the fit. Each replica perturbs the measured readings
+  // by an error uniform over one resolution step (what rounding to the graduation leaves)
+  // and the smoothing term by a standard normal vector, and is solved by NNLS at the chosen
+  // lambda; the band is the pointwise quantiles of the replicas' curves. Unlike a bootstrap
+  // around the fit, this also spreads the curve where only the smoothing fixes it.
   out.coverage = options.coverage;
   out.replicas = std::max(0, options.bootstrap);
   if (out.replicas > 0) {
@@ -276,11 +289,14 @@ InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<M
     const Problem problem(j, fitted, x, out.sigma, widths);
     std::mt19937_64 rng(options.seed);
     std::uniform_real_distribution<double> noise(-0.5 * resolution, 0.5 * resolution);
+    std::normal_distribution<double> gauss;
     std::vector<std::vector<double>> curves(out.percent_finer.size());
     for (int b = 0; b < out.replicas; ++b) {
-      Eigen::VectorXd replica = fitted;
+      Eigen::VectorXd replica = measured;
       for (Eigen::Index i = 0; i < replica.size(); ++i) replica(i) += noise(rng);
-      const auto p = curve_of(problem.choose(replica, options.tau).x);
+      Eigen::VectorXd prior(problem.smoothing_rows());
+      for (Eigen::Index i = 0; i < prior.size(); ++i) prior(i) = gauss(rng);
+      const auto p = curve_of(problem.solve(replica, out.lambda, x, prior));
       for (std::size_t k = 0; k < p.size(); ++k) curves[k].push_back(p[k]);
     }
     const double tail = 0.5 * (1.0 - options.coverage);

@@ -25,12 +25,31 @@ Eigen::VectorXd passive_solution(const Eigen::MatrixXd& a, const Eigen::VectorXd
 
 }  // namespace
 
-NnlsResult nnls(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, int max_iterations) {
+NnlsResult nnls(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, const Eigen::VectorXd& start,
+                int max_iterations) {
   const Eigen::Index n = a.cols();
   if (max_iterations <= 0) max_iterations = 3 * int(n) + 30;
   NnlsResult r;
   r.x = Eigen::VectorXd::Zero(n);
   std::vector<bool> passive(std::size_t(n), false);
+  if (start.size() == n) {
+    // Warm start: the guess's support, less whatever its least-squares solution makes
+    // non-positive, until that solution is feasible; it is then a valid starting point.
+    for (Eigen::Index j = 0; j < n; ++j) passive[std::size_t(j)] = start(j) > 0;
+    for (Eigen::Index round = 0; round <= n; ++round) {
+      const Eigen::VectorXd z = passive_solution(a, b, passive);
+      bool feasible = true;
+      for (Eigen::Index j = 0; j < n; ++j)
+        if (passive[std::size_t(j)] && !(z(j) > 0)) {
+          passive[std::size_t(j)] = false;
+          feasible = false;
+        }
+      if (feasible) {
+        r.x = z;
+        break;
+      }
+    }
+  }
   // Lawson-Hanson's tolerance on the gradient: relative to the scale of A^T b.
   const double tol = 10.0 * std::numeric_limits<double>::epsilon() * double(n) *
                      std::max(1.0, (a.transpose() * b).cwiseAbs().maxCoeff());
