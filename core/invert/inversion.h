@@ -21,7 +21,7 @@ struct InversionOptions {
   int subclasses = 8;       // size classes per bin in the forward model
   int bootstrap = 200;      // replicas for the band (0: no band)
   double coverage = 0.90;   // of the band, pointwise
-  double tau = 1.0;         // discrepancy safety factor (chi^2 target tau^2 N)
+  double tau = 0.7;         // discrepancy factor: chi^2 target (tau sqrt(N) + sqrt(floor))^2
   std::uint64_t seed = 1;   // of the bootstrap's noise
   int max_iterations = 12;  // Gauss-Newton steps (the hydrometer)
 };
