@@ -6,6 +6,7 @@
 #include "app/batch_command.h"
 #include "app/bench_command.h"
 #include "app/exit_codes.h"
+#include "app/invert_command.h"
 #include "app/qt_platform.h"
 #include "app/reduce_command.h"
 #include "app/render_command.h"
@@ -75,6 +76,50 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
 
+  InvertOptions invert_options;
+  auto* invert_cmd = cli.add_subcommand(
+      "invert",
+      "From a laboratory's readings back to the grading curve: the curve whose simulated test "
+      "reproduces them, with an uncertainty band, beside the standard reduction");
+  invert_cmd
+      ->add_option("readings", invert_options.readings,
+                   "CSV: hydrometer as for reduce; buoyancy time_min, apparent_mass_g; pipette "
+                   "time_min, dry_mass_g")
+      ->required();
+  invert_cmd->add_option("--test", invert_options.test, "hydrometer, buoyancy or pipette")
+      ->check(CLI::IsMember({"hydrometer", "buoyancy", "pipette"}))
+      ->capture_default_str();
+  invert_cmd->add_option("--scene", invert_options.scene,
+                         "Set-up from a scene (cylinder, fluid, grains, mass, instruments)");
+  invert_cmd->add_option("--out", invert_options.out, "Output folder")->capture_default_str();
+  invert_cmd->add_option("--gs", invert_options.specific_gravity,
+                         "Specific gravity of the solids (default 2.65)");
+  invert_cmd->add_option("--mass-g", invert_options.dry_mass_g, "Dry mass in the cylinder, g (50)");
+  invert_cmd->add_option("--volume-ml", invert_options.volume_ml, "Suspension volume, mL (1000)");
+  invert_cmd->add_option("--area-cm2", invert_options.area_cm2,
+                         "Cylinder's inside cross-section, cm^2 (27.8)");
+  invert_cmd->add_option("--depth-cm", invert_options.depth_cm,
+                         "Depth of the sphere's or pipette's centre, cm (0.3 of the height)");
+  invert_cmd->add_option("--temperature-c", invert_options.temperature_c,
+                         "Water temperature for the sphere and pipette without a scene (20)");
+  invert_cmd
+      ->add_option("--resolution", invert_options.resolution,
+                   "Reading resolution in the reading's unit (0: 1 g/L, 0.001 g, 0.0001 g)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  invert_cmd
+      ->add_option("--refine", invert_options.refine,
+                   "Grid nodes between two readings' diameters (0 to 6)")
+      ->capture_default_str();
+  invert_cmd->add_option("--replicas", invert_options.replicas, "Samples for the band (0: none)")
+      ->check(CLI::Range(0, 100000))
+      ->capture_default_str();
+  invert_cmd->add_option("--coverage", invert_options.coverage, "Coverage of the band")
+      ->capture_default_str();
+  invert_cmd->add_option("--seed", invert_options.seed, "Seed of the band's noise")
+      ->capture_default_str();
+  invert_cmd->add_flag("-q,--quiet", invert_options.quiet, "Print only warnings and errors");
+
   BenchOptions bench_options;
   auto* bench_cmd = cli.add_subcommand(
       "bench",
@@ -103,5 +148,6 @@ int main(int argc, char** argv) {
   if (batch_cmd->parsed()) return batch(batch_options);
   if (render_cmd->parsed()) return render_runs(render_options);
   if (reduce_cmd->parsed()) return reduce(reduce_options);
+  if (invert_cmd->parsed()) return invert(invert_options);
   return exit_code::usage;
 }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -34,9 +36,11 @@ LabCsvError::LabCsvError(std::size_t line, const std::string& column, const std:
                             (column.empty() ? "" : ", column " + column) + ": " + why),
       line_(line) {}
 
-std::vector<LabReading> read_lab_readings_csv(std::istream& in) {
-  const std::array<std::string, 4> names{"time_min", "reading_g_per_l", "temperature_c",
-                                         "composite_correction_g_per_l"};
+std::vector<std::vector<double>> read_numeric_csv(std::istream& in,
+                                                  const std::vector<std::string>& required,
+                                                  const std::vector<std::string>& optional) {
+  std::vector<std::string> names = required;
+  names.insert(names.end(), optional.begin(), optional.end());
   std::string line;
   std::size_t number = 0;
   std::vector<std::string> header;
@@ -45,20 +49,20 @@ std::vector<LabReading> read_lab_readings_csv(std::istream& in) {
     if (!blank(line)) header = split(line);
   }
   if (header.empty()) throw LabCsvError(number, "", "no header");
-  std::array<std::optional<std::size_t>, 4> column;
+  std::vector<std::optional<std::size_t>> column(names.size());
   for (std::size_t k = 0; k < names.size(); ++k) {
     auto it = std::find(header.begin(), header.end(), names[k]);
     if (it != header.end())
       column[k] = std::size_t(it - header.begin());
-    else if (k < 3)
+    else if (k < required.size())
       throw LabCsvError(number, names[k], "missing from the header");
   }
-  std::vector<LabReading> readings;
+  std::vector<std::vector<double>> rows;
   while (std::getline(in, line)) {
     ++number;
     if (blank(line)) continue;
     const auto cells = split(line);
-    std::array<double, 4> v{0, 0, 0, 0};
+    std::vector<double> v(names.size(), std::numeric_limits<double>::quiet_NaN());
     for (std::size_t k = 0; k < names.size(); ++k) {
       if (!column[k]) continue;
       if (*column[k] >= cells.size()) throw LabCsvError(number, names[k], "missing value");
@@ -68,8 +72,16 @@ std::vector<LabReading> read_lab_readings_csv(std::istream& in) {
       if (ec != std::errc() || ptr != end || text.empty())
         throw LabCsvError(number, names[k], "'" + text + "' is not a number");
     }
-    readings.push_back({v[0] * 60.0, v[1], v[2], v[3]});
+    rows.push_back(std::move(v));
   }
+  return rows;
+}
+
+std::vector<LabReading> read_lab_readings_csv(std::istream& in) {
+  std::vector<LabReading> readings;
+  for (const auto& v : read_numeric_csv(in, {"time_min", "reading_g_per_l", "temperature_c"},
+                                        {"composite_correction_g_per_l"}))
+    readings.push_back({v[0] * 60.0, v[1], v[2], std::isnan(v[3]) ? 0.0 : v[3]});
   return readings;
 }
 

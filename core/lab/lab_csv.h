@@ -22,6 +22,13 @@ class LabCsvError : public std::invalid_argument {
   std::size_t line_;
 };
 
+// Reads a CSV of numbers with a header naming the columns (any order, extra columns
+// ignored): per data row, the values of `required` then `optional` in that order, NaN for an
+// optional column the header lacks. Throws LabCsvError naming the line and the column.
+std::vector<std::vector<double>> read_numeric_csv(std::istream& in,
+                                                  const std::vector<std::string>& required,
+                                                  const std::vector<std::string>& optional = {});
+
 // Reads hydrometer readings in the laboratory's units, one per line, with a header naming
 // the columns (any order): time_min, reading_g_per_l, temperature_c and, optionally,
 // composite_correction_g_per_l (0 if absent). Returns them in SI (time in s).

@@ -1,0 +1,214 @@
+#include "app/invert_command.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+#include <nlohmann/json.hpp>
+
+#include "app/exit_codes.h"
+#include "core/invert/invert_input.h"
+#include "core/lab/hydrometer_reduction.h"
+#include "core/lab/lab_csv.h"
+#include "core/lab/water.h"
+#include "core/scene/scene_loader.h"
+#include "render/invert_figure.h"
+
+namespace sedem::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+using invert::Test;
+
+// Thrown for a flag out of its range: exit 2 like an invalid reading.
+struct InvalidSetup : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+void check_range(const char* flag, double value, double lo, double hi) {
+  if (!(value >= lo && value <= hi))
+    throw InvalidSetup(std::string(flag) + " = " + std::to_string(value) + ": allowed " +
+                       std::to_string(lo) + " to " + std::to_string(hi));
+}
+
+// The set-up: the scene's, or a laboratory's 152H test (ASTM cylinder of 27.8 cm^2 filled to
+// 1000 mL, water at the readings' mean temperature, Stokes drag) from the flags.
+Scene make_setup(const InvertOptions& o, double temperature_c) {
+  Scene s;
+  if (!o.scene.empty()) {
+    s = load_scene(o.scene);
+  } else {
+    s.fluid.density = water::density(temperature_c);
+    s.fluid.viscosity = water::viscosity(temperature_c);
+    s.forces.drag = "stokes";
+    const double area = o.area_cm2.value_or(27.8) * 1e-4;
+    s.cylinder.diameter = std::sqrt(4.0 * area / std::numbers::pi);
+    s.cylinder.height = o.volume_ml.value_or(1000.0) * 1e-6 / area;
+    s.sample.particle_density = o.specific_gravity.value_or(2.65) * 1000.0;
+    s.sample.total_mass = o.dry_mass_g.value_or(50.0) * 1e-3;
+  }
+  if (o.area_cm2 && !o.scene.empty())
+    s.cylinder.diameter = std::sqrt(4.0 * *o.area_cm2 * 1e-4 / std::numbers::pi);
+  if (o.volume_ml && !o.scene.empty())
+    s.cylinder.height =
+        *o.volume_ml * 1e-6 / (std::numbers::pi / 4.0 * s.cylinder.diameter * s.cylinder.diameter);
+  if (o.specific_gravity && !o.scene.empty()) s.sample.particle_density = *o.specific_gravity * 1e3;
+  if (o.dry_mass_g && !o.scene.empty()) s.sample.total_mass = *o.dry_mass_g * 1e-3;
+  if (o.depth_cm) {
+    check_range("--depth-cm", *o.depth_cm, 2.0, 0.9 * s.cylinder.height * 100.0);
+    s.instruments.buoyancy_depth_fraction = *o.depth_cm * 1e-2 / s.cylinder.height;
+    s.instruments.pipette_depth_fraction = s.instruments.buoyancy_depth_fraction;
+  }
+  check_range("--gs", s.sample.particle_density / 1000.0, 1.01, 10.0);
+  check_range("--mass-g", s.sample.total_mass * 1e3, 1.0, 500.0);
+  check_range("cylinder height (m)", s.cylinder.height, 0.1, 2.0);
+  return s;
+}
+
+std::string number(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.9g", v);
+  return b;
+}
+
+int run_invert(const InvertOptions& o) {
+  const Test test = invert::parse_test(o.test);
+  std::ifstream in(o.readings);
+  if (!in) {
+    std::fprintf(stderr, "sedem: %s: cannot open the readings file\n", o.readings.c_str());
+    return exit_code::invalid_scene;
+  }
+  // The readings in the laboratory's units and, for the 152H, the standard D422 reduction.
+  std::vector<invert::Measurement> data;
+  std::vector<GradingPoint> standard;
+  std::string standard_name;
+  Scene scene;
+  if (test == Test::hydrometer) {
+    const auto lab = read_lab_readings_csv(in);
+    double mean_t = 20;
+    if (!lab.empty()) {
+      mean_t = 0;
+      for (const auto& r : lab) mean_t += r.temperature / double(lab.size());
+    }
+    scene = make_setup(o, mean_t);
+    const LabSpecimen specimen{scene.sample.particle_density / 1000.0, scene.sample.total_mass};
+    for (const auto& p : reduce_astm_d422(lab, specimen))  // validates the readings
+      standard.push_back({p.diameter, p.percent_finer});
+    for (const auto& r : lab) data.push_back({r.time, r.reading - r.composite_correction});
+    standard_name = "ASTM D422";
+  } else {
+    data = invert::read_measurements_csv(in, test);
+    scene = make_setup(o, o.temperature_c.value_or(20.0));
+    invert::validate_measurements(scene, test, data, {});
+    standard = invert::standard_reduction(scene, test, data);
+    standard_name = test == Test::buoyancy ? "Eq. 22 (sphere)" : "Eq. 17 (pipette)";
+  }
+  invert::InversionOptions options;
+  options.resolution = o.resolution;
+  options.refine = o.refine;
+  options.bootstrap = o.replicas;
+  options.coverage = o.coverage;
+  options.seed = o.seed;
+  const auto curve = invert::invert_readings(scene, test, data, options);
+
+  std::error_code ec;
+  fs::create_directories(o.out, ec);
+  if (ec) {
+    std::fprintf(stderr, "sedem: cannot create %s: %s\n", o.out.c_str(), ec.message().c_str());
+    return exit_code::output_unwritable;
+  }
+  const fs::path dir(o.out);
+  {
+    std::ofstream csv(dir / "inverted_curve.csv");
+    csv << "diameter_m,percent_finer,percent_finer_low,percent_finer_high\n";
+    for (std::size_t k = 0; k < curve.diameter.size(); ++k)
+      csv << number(curve.diameter[k]) << ',' << number(curve.percent_finer[k]) << ','
+          << (curve.lower.empty() ? "" : number(curve.lower[k])) << ','
+          << (curve.upper.empty() ? "" : number(curve.upper[k])) << '\n';
+    if (!csv) return exit_code::io_failure;
+  }
+  const std::string unit = test == Test::hydrometer ? "g_per_l" : "g";
+  {
+    std::ofstream csv(dir / "readings_fit.csv");
+    csv << "time_s,measured_" << unit << ",fitted_" << unit << ",pinned_diameter_m,"
+        << "inverted_percent_finer,standard_diameter_m,standard_percent_finer\n";
+    for (std::size_t i = 0; i < data.size(); ++i)
+      csv << number(data[i].time) << ',' << number(curve.measured[i]) << ','
+          << number(curve.fitted[i]) << ',' << number(curve.reading_diameter[i]) << ','
+          << number(curve.at(curve.reading_diameter[i])) << ',' << number(standard[i].diameter)
+          << ',' << number(standard[i].percent_finer) << '\n';
+    if (!csv) return exit_code::io_failure;
+  }
+  {
+    nlohmann::json j;
+    j["test"] = o.test;
+    j["readings"] = o.readings;
+    j["scene"] = o.scene;
+    j["resolution"] = o.resolution > 0 ? o.resolution : invert::default_resolution(test);
+    j["resolution_unit"] = invert::reading_unit(test);
+    j["sigma"] = curve.sigma;
+    j["lambda"] = curve.lambda;
+    j["chi2"] = curve.chi2;
+    j["chi2_target"] = curve.chi2_target;
+    j["chi2_floor"] = curve.chi2_floor;
+    j["gauss_newton_iterations"] = curve.iterations;
+    j["band_coverage"] = curve.coverage;
+    j["band_replicas"] = curve.replicas;
+    j["resolved_diameter_m"] = {curve.resolved_min, curve.resolved_max};
+    j["standard_reduction"] = standard_name;
+    std::ofstream f(dir / "invert.json");
+    f << j.dump(2) << '\n';
+    if (!f) return exit_code::io_failure;
+  }
+  render::InvertFigureInput fig;
+  fig.title = "Inverted grading curve (" + o.test + ") and " + standard_name;
+  fig.diameter_m = curve.diameter;
+  fig.percent_finer = curve.percent_finer;
+  fig.lower = curve.lower;
+  fig.upper = curve.upper;
+  fig.band_name = std::to_string(int(std::lround(100 * curve.coverage))) + " % band";
+  fig.standard_name = standard_name;
+  for (const auto& p : standard) {
+    fig.standard_diameter_m.push_back(p.diameter);
+    fig.standard_percent_finer.push_back(p.percent_finer);
+  }
+  render::write_invert_figure(fig, dir / "invert");
+
+  if (!o.quiet) {
+    std::printf("%-8s %-12s %-10s %-10s %-10s %-12s %-10s\n", "time_min", "measured", "fitted",
+                "d_um", "inverted_%", "standard_um", "standard_%");
+    for (std::size_t i = 0; i < data.size(); ++i)
+      std::printf("%-8.2f %-12.5g %-10.5g %-10.3f %-10.2f %-12.3f %-10.2f\n", data[i].time / 60,
+                  curve.measured[i], curve.fitted[i], curve.reading_diameter[i] * 1e6,
+                  curve.at(curve.reading_diameter[i]), standard[i].diameter * 1e6,
+                  standard[i].percent_finer);
+    std::printf("lambda %.3g, chi2 %.2f (target %.2f, floor %.2f), %d replicas; wrote %s\n",
+                curve.lambda, curve.chi2, curve.chi2_target, curve.chi2_floor, curve.replicas,
+                o.out.c_str());
+  }
+  return exit_code::ok;
+}
+
+}  // namespace
+
+int invert(const InvertOptions& options) {
+  try {
+    return run_invert(options);
+  } catch (const SceneError& e) {
+    std::fprintf(stderr, "sedem: %s\n", e.what());
+    return exit_code::invalid_scene;
+  } catch (const std::invalid_argument& e) {  // LabCsvError, InvalidLabReading, InvalidSetup,
+                                              // InvalidInversionInput
+    std::fprintf(stderr, "sedem: %s: %s\n", options.readings.c_str(), e.what());
+    return exit_code::invalid_scene;
+  } catch (const std::runtime_error& e) {  // the forward model: hydrometer off the column
+    std::fprintf(stderr, "sedem: %s: the forward model failed: %s\n", options.readings.c_str(),
+                 e.what());
+    return exit_code::invalid_scene;
+  }
+}
+
+}  // namespace sedem::app

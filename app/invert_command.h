@@ -1,0 +1,34 @@
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace sedem::app {
+
+struct InvertOptions {
+  std::string readings;  // CSV: 152H as for `reduce`; sphere time_min, apparent_mass_g;
+                         // pipette time_min, dry_mass_g
+  std::string test = "hydrometer";
+  std::string scene;  // set-up from a scene file; empty: a laboratory's, from the flags
+  std::string out = "invert-out";
+  // The laboratory's set-up, when no scene is given (or to override the scene's).
+  std::optional<double> specific_gravity;  // Gs, default 2.65
+  std::optional<double> dry_mass_g;        // default 50
+  std::optional<double> volume_ml;         // suspension volume, default 1000
+  std::optional<double> area_cm2;          // cylinder's inside area, default 27.8
+  std::optional<double> depth_cm;          // sphere's or pipette's depth; default 0.3 H
+  std::optional<double> temperature_c;     // sphere and pipette without a scene; default 20
+  double resolution = 0;                   // 0: the test's default
+  int refine = 2;
+  int replicas = 200;
+  double coverage = 0.9;
+  unsigned long seed = 1;
+  bool quiet = false;
+};
+
+// `sedem invert READINGS.csv --test T`: the grading curve whose simulated test reproduces
+// the readings (docs/invert.md), with its band, the standard reduction beside it, a figure
+// and CSVs in --out. Returns the exit status: 2 for invalid readings or set-up.
+int invert(const InvertOptions& options);
+
+}  // namespace sedem::app

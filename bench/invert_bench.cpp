@@ -1,0 +1,216 @@
+// The inversion's round trip over the paper's five samples: each test's readings of a known
+// sample, rounded to the instrument's resolution, inverted (`sedem invert`'s core), and the
+// inverted curve's largest |inverted - true| against the standard reduction's
+// |reduced - true|, both at the standard reduction's diameters; then the band's coverage of
+// the true curve over noisy copies of the readings.
+//
+//   sedem_bench_invert [--scenes ...] [--source reference|dem] [--count 1000]
+//                      [--tests hydrometer,buoyancy,pipette] [--copies 100] [--replicas 100]
+//                      [--set key=value ...] [--out DIR]
+//
+// --source reference reads the continuum reference solution (what the DEM converges to; the
+// forward model's physics, on the sample's own 220 size classes); --source dem simulates the
+// sample with --count particles (minutes per sample) and reads the DEM. Standard reductions:
+// ASTM D422 for the 152H (its effective depth, the scene's cylinder volume), Eq. 16 with
+// Eq. 22 or Eq. 17 for the sphere and the pipette. Writes invert_bench.csv into --out.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/invert/invert_input.h"
+#include "core/lab/hydrometer_reduction.h"
+#include "core/observe/simulate.h"
+#include "core/reference/reference_readings.h"
+#include "core/sample/sample_builder.h"
+#include "core/sample/size_classes.h"
+#include "core/scene/scene_loader.h"
+
+namespace {
+
+using namespace sedem;
+namespace fs = std::filesystem;
+using invert::Test;
+
+double round_to(double v, double step) {
+  return std::round(v / step) * step;
+}
+
+// The instrument's own value of a reading: 152H R (g/L), apparent mass (g), dry mass (g).
+double raw_value(const Reading& r, Test test) {
+  switch (test) {
+    case Test::hydrometer:
+      return r.extra[0];
+    case Test::buoyancy:
+      return r.extra[1] * 1e3;
+    case Test::pipette:
+      return r.extra[3] * 1e3;
+  }
+  return 0;
+}
+
+struct Case {
+  std::vector<double> times, raw;  // s; instrument's unit, unrounded
+};
+
+// The readings as recorded (rounded; the 152H's clear-liquid reading subtracted) and their
+// standard reduction.
+std::vector<invert::Measurement> recorded(const Scene& scene, Test test, const Case& c,
+                                          const std::vector<double>& shift,
+                                          std::vector<GradingPoint>* standard) {
+  const invert::ForwardModel model(scene, test, invert::log_grid(1e-6, 1e-4, 2), {});
+  const double res = invert::default_resolution(test);
+  const double clear = test == Test::hydrometer ? model.clear_liquid_reading() : 0.0;
+  std::vector<invert::Measurement> data;
+  std::vector<LabReading> lab;
+  for (std::size_t i = 0; i < c.times.size(); ++i) {
+    const double r = round_to(c.raw[i] + (shift.empty() ? 0.0 : shift[i]), res);
+    data.push_back({c.times[i], r - clear});
+    lab.push_back({c.times[i], r, 20.0, clear});
+  }
+  if (standard) {
+    if (test == Test::hydrometer) {
+      // D422's percent finer assumes 1000 mL: the specimen's mass per litre of suspension.
+      const double volume_l = std::numbers::pi / 4.0 * scene.cylinder.diameter *
+                              scene.cylinder.diameter * scene.cylinder.height * 1e3;
+      const LabSpecimen specimen{scene.sample.particle_density / 1000.0,
+                                 scene.sample.total_mass / volume_l};
+      standard->clear();
+      for (const auto& p : reduce_astm_d422(lab, specimen))
+        standard->push_back({p.diameter, p.percent_finer});
+    } else {
+      *standard = invert::standard_reduction(scene, test, data);
+    }
+  }
+  return data;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App cli{"sedem invert benchmark: the round trip over the five samples"};
+  const std::string root = SEDEM_SOURCE_DIR;
+  std::vector<std::string> scenes;
+  for (int k = 1; k <= 5; ++k)
+    scenes.push_back(root + "/scenes/sample" + std::to_string(k) + ".toml");
+  std::string source = "reference", out = "bench-out";
+  std::vector<std::string> tests{"hydrometer", "buoyancy", "pipette"}, sets;
+  long count = 1000;
+  int copies = 100, replicas = 100, refine = 2;
+  double tau = 0.7;
+  cli.add_option("--scenes", scenes, "Scene files")->capture_default_str();
+  cli.add_option("--source", source, "reference or dem")
+      ->check(CLI::IsMember({"reference", "dem"}))
+      ->capture_default_str();
+  cli.add_option("--count", count, "Simulated particles for --source dem")->capture_default_str();
+  cli.add_option("--tests", tests, "Tests to invert")->delimiter(',');
+  cli.add_option("--copies", copies, "Noisy copies for the band's coverage (0: none)")
+      ->capture_default_str();
+  cli.add_option("--replicas", replicas, "Band samples per inversion")->capture_default_str();
+  cli.add_option("--refine", refine, "Grid nodes between two readings' diameters")
+      ->capture_default_str();
+  cli.add_option("--tau", tau, "Discrepancy principle's safety factor")->capture_default_str();
+  cli.add_option("--set", sets, "A key set in every scene");
+  cli.add_option("--out", out, "Folder for the CSV")->capture_default_str();
+  CLI11_PARSE(cli, argc, argv);
+
+  fs::create_directories(out);
+  std::ofstream csv(fs::path(out) / "invert_bench.csv");
+  csv << "sample,test,source,readings,standard_max_pp,inverted_max_pp,goal_met,lambda,chi2,"
+         "chi2_target,coverage,invert_s\n";
+  std::printf("%-8s %-10s %-9s %3s %9s %9s %5s %9s %8s %8s %8s\n", "sample", "test", "source", "n",
+              "std_pp", "inv_pp", "goal", "lambda", "chi2", "cover", "inv_s");
+  for (const auto& file : scenes) {
+    std::vector<std::string> overrides = sets;
+    if (source == "dem") overrides.push_back("sample.simulated_count=" + std::to_string(count));
+    Scene scene = load_scene(file, overrides);
+    scene.output = {};
+    std::vector<TestReadings> readings;
+    Sample sample;
+    if (source == "dem") {
+      sample = build_sample(scene);
+      readings = simulate(scene, sample).results.dem();
+    } else {
+      sample.particle_density = scene.sample.particle_density;
+      sample.section_mass = scene.sample.total_mass * scene.cylinder.section_fraction;
+      sample.classes = discretise(GradingCurve(scene.sample.grading), scene.sample.size_count,
+                                  sample.section_mass, sample.particle_density);
+      readings = reference_readings(scene, sample);
+    }
+    for (const auto& name : tests) {
+      const Test test = invert::parse_test(name);
+      const auto it = std::find_if(readings.begin(), readings.end(),
+                                   [&](const TestReadings& t) { return t.test == name; });
+      if (it == readings.end()) continue;
+      Case c;
+      for (const auto& r : it->rows) {
+        c.times.push_back(r.time);
+        c.raw.push_back(raw_value(r, test));
+      }
+      std::vector<GradingPoint> standard;
+      const auto data = recorded(scene, test, c, {}, &standard);
+      invert::InversionOptions options;
+      options.bootstrap = 0;
+      options.refine = refine;
+      options.tau = tau;
+      const auto t0 = std::chrono::steady_clock::now();
+      const auto curve = invert::invert_readings(scene, test, data, options);
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      double std_err = 0, inv_err = 0;
+      for (const auto& p : standard) {
+        const double truth = true_percent_finer(sample.classes, p.diameter);
+        std_err = std::max(std_err, std::abs(p.percent_finer - truth));
+        if (std::getenv("SEDEM_INVERT_DEBUG"))
+          std::printf("  d %.2f truth %.2f std %.2f inv %.2f\n", p.diameter * 1e6, truth,
+                      p.percent_finer, curve.at(p.diameter));
+        inv_err = std::max(inv_err, std::abs(curve.at(p.diameter) - truth));
+      }
+      // Goal: at least halve an error above 2 pp; never worse by more than 0.5 pp.
+      const bool goal = std_err > 2.0 ? inv_err <= 0.5 * std_err : inv_err <= std_err + 0.5;
+      // Coverage: noisy copies (an error uniform over one resolution step before rounding).
+      double cover = std::nan("");
+      if (copies > 0) {
+        std::mt19937_64 rng(7);
+        const double res = invert::default_resolution(test);
+        std::uniform_real_distribution<double> noise(-0.5 * res, 0.5 * res);
+        invert::InversionOptions o;
+        o.bootstrap = replicas;
+        o.refine = refine;
+        o.tau = tau;
+        int inside = 0, total = 0;
+        for (int k = 0; k < copies; ++k) {
+          std::vector<double> shift;
+          for (std::size_t i = 0; i < c.raw.size(); ++i) shift.push_back(noise(rng));
+          o.seed = std::uint64_t(k + 1);
+          const auto noisy =
+              invert::invert_readings(scene, test, recorded(scene, test, c, shift, nullptr), o);
+          for (double d : noisy.reading_diameter) {
+            const double truth = true_percent_finer(sample.classes, d);
+            if (truth <= 0.5 || truth >= 99.5) continue;
+            ++total;
+            inside += truth >= noisy.lower_at(d) && truth <= noisy.upper_at(d);
+          }
+        }
+        cover = total ? double(inside) / total : std::nan("");
+      }
+      std::printf("%-8s %-10s %-9s %3zu %9.2f %9.2f %5s %9.3g %8.2f %8.3f %8.2f\n",
+                  scene.name.c_str(), name.c_str(), source.c_str(), data.size(), std_err, inv_err,
+                  goal ? "yes" : "no", curve.lambda, curve.chi2, cover, seconds);
+      std::fflush(stdout);
+      csv << scene.name << ',' << name << ',' << source << ',' << data.size() << ',' << std_err
+          << ',' << inv_err << ',' << (goal ? "yes" : "no") << ',' << curve.lambda << ','
+          << curve.chi2 << ',' << curve.chi2_target << ',' << cover << ',' << seconds << '\n';
+    }
+  }
+  return 0;
+}

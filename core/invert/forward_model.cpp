@@ -1,0 +1,239 @@
+#include "core/invert/forward_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "core/physics/stokes.h"
+#include "core/reference/reference_field.h"
+#include "core/reference/reference_readings.h"
+
+namespace sedem::invert {
+
+Test parse_test(const std::string& name) {
+  if (name == "hydrometer") return Test::hydrometer;
+  if (name == "buoyancy") return Test::buoyancy;
+  if (name == "pipette") return Test::pipette;
+  throw std::invalid_argument("test '" + name + "': expected hydrometer, buoyancy or pipette");
+}
+
+std::string test_name(Test test) {
+  switch (test) {
+    case Test::hydrometer:
+      return "hydrometer";
+    case Test::buoyancy:
+      return "buoyancy";
+    case Test::pipette:
+      return "pipette";
+  }
+  return "";
+}
+
+std::string reading_unit(Test test) {
+  return test == Test::hydrometer ? "g/L" : "g";
+}
+
+Grid log_grid(double smallest, double largest, std::size_t count) {
+  if (!(smallest > 0 && largest > smallest && count >= 2))
+    throw std::invalid_argument("grid: needs 0 < smallest < largest and two nodes or more");
+  Grid g;
+  const double ratio = std::log(largest / smallest);
+  for (std::size_t k = 0; k < count; ++k)
+    g.nodes.push_back(smallest * std::exp(ratio * double(k) / double(count - 1)));
+  return g;
+}
+
+Grid reading_grid(std::vector<double> diameters, int refine) {
+  std::sort(diameters.begin(), diameters.end());
+  std::vector<double> base;
+  for (double d : diameters) {
+    if (!(d > 0)) throw std::invalid_argument("grid: diameters must be positive");
+    if (base.empty() || d > 1.02 * base.back()) base.push_back(d);
+  }
+  if (base.size() < 2) throw std::invalid_argument("grid: the readings resolve one diameter");
+  std::vector<double> anchors;
+  anchors.push_back(base.front() / 1.5);
+  anchors.insert(anchors.end(), base.begin(), base.end());
+  anchors.push_back(2.0 * base.back());
+  Grid g;
+  for (std::size_t k = 0; k + 1 < anchors.size(); ++k) {
+    const double lo = anchors[k], hi = anchors[k + 1];
+    // The margins get two intervals each; between readings, 1 + refine.
+    const int parts = (k == 0 || k + 2 == anchors.size()) ? 2 : 1 + std::max(0, refine);
+    for (int s = 0; s < parts; ++s) g.nodes.push_back(lo * std::pow(hi / lo, double(s) / parts));
+  }
+  g.nodes.push_back(anchors.back());
+  return g;
+}
+
+std::vector<double> bin_widths(const Grid& grid) {
+  const auto& d = grid.nodes;
+  std::vector<double> w{std::log(10.0)};
+  for (std::size_t k = 1; k < d.size(); ++k) w.push_back(std::log(d[k] / d[k - 1]));
+  w.push_back(std::log(4.0));
+  return w;
+}
+
+ForwardModel::ForwardModel(const Scene& scene, Test test, Grid grid, std::vector<double> times,
+                           int subclasses)
+    : scene_(scene),
+      test_(test),
+      grid_(std::move(grid)),
+      times_(std::move(times)),
+      subclasses_(subclasses),
+      layers_(std::size_t(scene.instruments.layers)) {
+  if (grid_.nodes.size() < 2) throw std::invalid_argument("forward model: two grid nodes or more");
+  if (subclasses_ < 1) throw std::invalid_argument("forward model: one subclass per bin or more");
+  const auto& cfg = scene.instruments;
+  suspension_.fluid = scene.fluid;
+  suspension_.cylinder = scene.cylinder;
+  suspension_.particle_density = scene.sample.particle_density;
+  suspension_.initial_concentration =
+      scene.sample.total_mass / (std::numbers::pi / 4.0 * scene.cylinder.diameter *
+                                 scene.cylinder.diameter * scene.cylinder.height);
+  HydrometerDesign design;
+  design.tip_length = cfg.hydrometer_tip_length;
+  design.shoulder_length = cfg.hydrometer_shoulder_length;
+  hydrometer_ = make_hydrometer(design);
+  sphere_.diameter = cfg.sphere_diameter;
+  sphere_.mass = cfg.sphere_mass;
+  sphere_.centre_depth = cfg.buoyancy_depth_fraction * scene.cylinder.height;
+  pipette_.volume = cfg.pipette_volume;
+  pipette_.depth = cfg.pipette_depth_fraction * scene.cylinder.height;
+  clear_reading_ = hydrometer_.reading_at(tip_depth_in_uniform(hydrometer_, scene.fluid.density) -
+                                          hydrometer_.bulb_length);
+
+  // Each bin's size classes, evenly spaced in log d across it.
+  const auto& d = grid_.nodes;
+  hindrance_ =
+      cfg.reference_hindered
+          ? std::pow(1.0 - suspension_.initial_concentration / suspension_.particle_density,
+                     cfg.reference_richardson_zaki_exponent)
+          : 1.0;
+  for (std::size_t b = 0; b < grid_.bins(); ++b) {
+    const double lo = b == 0 ? d.front() / 10.0 : d[b - 1];
+    const double hi = b == d.size() ? 4.0 * d.back() : d[b];
+    for (int s = 0; s < subclasses_; ++s) {
+      const double diameter = lo * std::pow(hi / lo, (s + 0.5) / subclasses_);
+      class_diameter_.push_back(diameter);
+      class_velocity_.push_back(
+          hindrance_ * reference_terminal_velocity(scene.forces.drag, diameter,
+                                                   suspension_.particle_density, scene.fluid));
+    }
+  }
+}
+
+double ForwardModel::read_fields(const LayerFields& fields) const {
+  switch (test_) {
+    case Test::hydrometer: {
+      const double tip = equilibrium_tip_depth(hydrometer_, fields);
+      return hydrometer_.reading_at(tip - hydrometer_.bulb_length) - clear_reading_;
+    }
+    case Test::buoyancy:
+      return (sphere_.mass - displaced_mass(sphere_, fields)) * 1e3;
+    case Test::pipette:
+      return read_pipette(pipette_, fields, 0.0, suspension_).dry_mass * 1e3;
+  }
+  return 0;
+}
+
+double ForwardModel::read(const Eigen::VectorXd& x, double time) const {
+  std::vector<SettlingClass> classes;
+  classes.reserve(class_diameter_.size());
+  const double c0 = suspension_.initial_concentration;
+  for (std::size_t k = 0; k < class_diameter_.size(); ++k) {
+    const double share = x(Eigen::Index(k / std::size_t(subclasses_))) / subclasses_;
+    classes.push_back({class_diameter_[k], c0 * share, class_velocity_[k]});
+  }
+  const ReferenceSolution reference(std::move(classes), scene_.cylinder,
+                                    suspension_.particle_density,
+                                    scene_.instruments.reference_bed_packing);
+  return read_fields(reference.layer_fields(time, layers_, scene_.fluid));
+}
+
+Eigen::VectorXd ForwardModel::readings(const Eigen::VectorXd& x) const {
+  if (std::size_t(x.size()) != grid_.bins())
+    throw std::invalid_argument("forward model: " + std::to_string(x.size()) + " shares for " +
+                                std::to_string(grid_.bins()) + " bins");
+  Eigen::VectorXd r(Eigen::Index(times_.size()));
+  for (std::size_t i = 0; i < times_.size(); ++i) r(Eigen::Index(i)) = read(x, times_[i]);
+  return r;
+}
+
+Eigen::MatrixXd ForwardModel::jacobian(const Eigen::VectorXd& x, double step) const {
+  const Eigen::Index n = x.size();
+  const Eigen::VectorXd base = readings(x);
+  Eigen::MatrixXd j(base.size(), n);
+  if (affine()) {
+    // Affine: each column is the response to the bin alone, less the empty reading.
+    const Eigen::VectorXd empty = readings(Eigen::VectorXd::Zero(n));
+    for (Eigen::Index k = 0; k < n; ++k) j.col(k) = readings(Eigen::VectorXd::Unit(n, k)) - empty;
+    return j;
+  }
+  for (Eigen::Index k = 0; k < n; ++k) {
+    Eigen::VectorXd moved = x;
+    moved(k) += step;
+    j.col(k) = (readings(moved) - base) / step;
+  }
+  return j;
+}
+
+double ForwardModel::empty_reading() const {
+  switch (test_) {
+    case Test::hydrometer:
+      return 0.0;
+    case Test::buoyancy:
+      return (sphere_.mass - scene_.fluid.density * sphere_.volume()) * 1e3;
+    case Test::pipette:
+      return 0.0;
+  }
+  return 0;
+}
+
+double ForwardModel::full_reading() const {
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(Eigen::Index(grid_.bins()));
+  x(0) = 1.0;
+  return read(x, 0.0);
+}
+
+double ForwardModel::nominal_depth() const {
+  switch (test_) {
+    case Test::hydrometer:
+      return tip_depth_in_uniform(hydrometer_, scene_.fluid.density) -
+             0.5 * hydrometer_.bulb_length;
+    case Test::buoyancy:
+      return sphere_.centre_depth;
+    case Test::pipette:
+      return pipette_.depth;
+  }
+  return 0;
+}
+
+double ForwardModel::reading_depth(double value) const {
+  if (test_ != Test::hydrometer) return nominal_depth();
+  return std::max(0.5 * hydrometer_.bulb_length,
+                  nominal_depth() - value * hydrometer_.mark_per_reading);
+}
+
+double ForwardModel::model_diameter(double time, double value) const {
+  const double speed = reading_depth(value) / time;
+  auto velocity = [&](double d) {
+    return hindrance_ * reference_terminal_velocity(scene_.forces.drag, d,
+                                                    suspension_.particle_density, scene_.fluid);
+  };
+  // The velocity grows with the diameter: bisection in log d from Stokes' estimate.
+  double lo = stokes_diameter(time, value) / 4.0, hi = stokes_diameter(time, value) * 4.0;
+  for (int it = 0; it < 100 && hi / lo > 1 + 1e-12; ++it) {
+    const double mid = std::sqrt(lo * hi);
+    (velocity(mid) < speed ? lo : hi) = mid;
+  }
+  return std::sqrt(lo * hi);
+}
+
+double ForwardModel::stokes_diameter(double time, double value) const {
+  return stokes::limiting_diameter(reading_depth(value), time, suspension_.particle_density,
+                                   suspension_.fluid);
+}
+
+}  // namespace sedem::invert

@@ -1,0 +1,311 @@
+#include "core/invert/inversion.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <sstream>
+
+#include "core/invert/nnls.h"
+
+namespace sedem::invert {
+
+namespace {
+
+std::string describe(std::size_t row, const std::string& field, double value,
+                     const std::string& why) {
+  std::ostringstream s;
+  if (row != InvalidInversionInput::kNoRow) s << "row " << row + 1 << ", ";
+  s << field << " = " << value << ": " << why;
+  return s.str();
+}
+
+std::string fixed(double v, int digits) {
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(digits);
+  s << v;
+  return s.str();
+}
+
+double quantile(std::vector<double> v, double q) {
+  std::sort(v.begin(), v.end());
+  const double pos = q * double(v.size() - 1);
+  const auto lo = std::size_t(std::floor(pos));
+  const auto hi = std::min(lo + 1, v.size() - 1);
+  return v[lo] + (pos - double(lo)) * (v[hi] - v[lo]);
+}
+
+// Linear in log d through (nodes, values), extended as InvertedCurve::at says.
+double interpolate(const std::vector<double>& d, const std::vector<double>& p, double x) {
+  if (d.empty()) return 0;
+  auto lerp = [](double x0, double y0, double x1, double y1, double v) {
+    const double t = std::log(v / x0) / std::log(x1 / x0);
+    return y0 + std::clamp(t, 0.0, 1.0) * (y1 - y0);
+  };
+  if (x <= d.front())
+    return x <= d.front() / 10.0 ? 0.0 : lerp(d.front() / 10.0, 0, d.front(), p.front(), x);
+  if (x >= d.back()) return lerp(d.back(), p.back(), 4.0 * d.back(), 100.0, x);
+  const auto it = std::upper_bound(d.begin(), d.end(), x);
+  const std::size_t k = std::size_t(it - d.begin());
+  return lerp(d[k - 1], p[k - 1], d[k], p[k], x);
+}
+
+// The regularised, constrained least squares at one linearisation: the readings are
+// modelled as base + J (x - x0).
+class Problem {
+ public:
+  Problem(const Eigen::MatrixXd& j, const Eigen::VectorXd& base, const Eigen::VectorXd& x0,
+          double sigma, const std::vector<double>& widths)
+      : j_(j), offset_(base - j * x0), sigma_(sigma) {
+    const Eigen::Index n = j.cols();
+    // The roughness: the integral over ln d of the squared slope of the mass per ln d,
+    // rho_k = x_k / w_k, i.e. the sum of (rho_{k+1} - rho_k)^2 / h_k with h_k the distance of
+    // the two bins' centres. Zero for a curve linear in log d. Interior bins only: the finest
+    // and the coarsest are open-ended.
+    const Eigen::Index rows = std::max<Eigen::Index>(0, n - 3);
+    l_ = Eigen::MatrixXd::Zero(rows, n);
+    for (Eigen::Index k = 0; k < rows; ++k) {
+      const double w0 = widths[std::size_t(k + 1)], w1 = widths[std::size_t(k + 2)];
+      const double h = std::sqrt(0.5 * (w0 + w1));
+      l_(k, k + 1) = -1.0 / (w0 * h);
+      l_(k, k + 2) = 1.0 / (w1 * h);
+    }
+    const double misfit_scale = (j / sigma).squaredNorm();
+    scale_ = rows > 0 ? misfit_scale / l_.squaredNorm() : 0.0;
+    // The sum of the shares is 1: a row weighted well above the misfit (30 times the
+    // largest column's norm holds the sum to about 1e-3 without spoiling the QR's accuracy).
+    omega_ = 30.0 * std::max(1.0, (j / sigma).colwise().norm().maxCoeff());
+  }
+
+  // `prior`, if given, shifts the smoothing term to ||sqrt(lambda) L x - prior||^2.
+  Eigen::VectorXd solve(const Eigen::VectorXd& measured, double mu,
+                        const Eigen::VectorXd& start = {},
+                        const Eigen::VectorXd& prior = {}) const {
+    const Eigen::Index m = j_.rows(), r = l_.rows(), n = j_.cols();
+    Eigen::MatrixXd a(m + r + 1, n);
+    Eigen::VectorXd b(m + r + 1);
+    a.topRows(m) = j_ / sigma_;
+    b.head(m) = (measured - offset_) / sigma_;
+    a.middleRows(m, r) = std::sqrt(mu * scale_) * l_;
+    if (prior.size() == r)
+      b.segment(m, r) = prior;
+    else
+      b.segment(m, r).setZero();
+    a.row(m + r).setConstant(omega_);
+    b(m + r) = omega_;
+    return nnls(a, b, start).x;
+  }
+
+  double chi2(const Eigen::VectorXd& measured, const Eigen::VectorXd& x) const {
+    return ((j_ * x + offset_ - measured) / sigma_).squaredNorm();
+  }
+
+  // The discrepancy principle: the largest mu whose chi^2 stays within the target
+  // (tau sqrt(N) + sqrt(floor))^2, floor the chi^2 of the least smoothing. Bisection in log mu.
+  struct Choice {
+    Eigen::VectorXd x;
+    double mu = 0, chi2 = 0, target = 0, floor = 0;
+  };
+  Choice choose(const Eigen::VectorXd& measured, double tau,
+                const Eigen::VectorXd& start = {}) const {
+    constexpr double kMuMin = 1e-10, kMuMax = 1e6;
+    Choice c;
+    const Eigen::VectorXd rough = solve(measured, kMuMin, start);
+    c.floor = chi2(measured, rough);
+    c.target = std::pow(tau * std::sqrt(double(measured.size())) + std::sqrt(c.floor), 2);
+    const Eigen::VectorXd smooth = solve(measured, kMuMax, start);
+    if (chi2(measured, smooth) <= c.target) {
+      c.x = smooth;
+      c.mu = kMuMax;
+    } else {
+      double lo = std::log(kMuMin), hi = std::log(kMuMax);
+      c.x = rough;
+      c.mu = kMuMin;
+      for (int it = 0; it < 24; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        const Eigen::VectorXd x = solve(measured, std::exp(mid), c.x);
+        if (chi2(measured, x) <= c.target) {
+          lo = mid;
+          c.x = x;
+          c.mu = std::exp(mid);
+        } else {
+          hi = mid;
+        }
+      }
+    }
+    c.chi2 = chi2(measured, c.x);
+    return c;
+  }
+
+ public:
+  Eigen::Index smoothing_rows() const { return l_.rows(); }
+
+ private:
+  Eigen::MatrixXd j_, l_;
+  Eigen::VectorXd offset_;
+  double sigma_, scale_ = 0, omega_ = 1;
+};
+
+std::vector<double> curve_of(const Eigen::VectorXd& x) {
+  // Percent finer at node k: the bins 0..k; the shares are rescaled to sum exactly to 1.
+  const double total = x.sum();
+  std::vector<double> p;
+  double sum = 0;
+  for (Eigen::Index k = 0; k + 1 < x.size(); ++k) {
+    sum += x(k);
+    p.push_back(std::clamp(100.0 * sum / total, 0.0, 100.0));
+  }
+  return p;
+}
+
+}  // namespace
+
+double default_resolution(Test test) {
+  switch (test) {
+    case Test::hydrometer:
+      return 1.0;
+    case Test::buoyancy:
+      return 1e-3;
+    case Test::pipette:
+      return 1e-4;
+  }
+  return 1.0;
+}
+
+double InvertedCurve::at(double d) const {
+  return interpolate(diameter, percent_finer, d);
+}
+double InvertedCurve::lower_at(double d) const {
+  return interpolate(diameter, lower.empty() ? percent_finer : lower, d);
+}
+double InvertedCurve::upper_at(double d) const {
+  return interpolate(diameter, upper.empty() ? percent_finer : upper, d);
+}
+
+InvalidInversionInput::InvalidInversionInput(std::size_t row, const std::string& field,
+                                             double value, const std::string& why)
+    : std::invalid_argument(describe(row, field, value, why)), row_(row) {}
+
+void validate_measurements(const Scene& scene, Test test, const std::vector<Measurement>& data,
+                           const InversionOptions& options) {
+  constexpr auto kNoRow = InvalidInversionInput::kNoRow;
+  const std::string unit = reading_unit(test);
+  if (data.size() < kMinReadings)
+    throw InvalidInversionInput(
+        kNoRow, "readings", double(data.size()),
+        "the inversion needs " + std::to_string(kMinReadings) + " readings or more");
+  if (options.refine < 0 || options.refine > kMaxRefine)
+    throw InvalidInversionInput(
+        kNoRow, "refine", options.refine,
+        "allowed 0 to " + std::to_string(kMaxRefine) + " nodes between two readings' diameters");
+  if (!(options.resolution >= 0) || !std::isfinite(options.resolution))
+    throw InvalidInversionInput(kNoRow, "resolution", options.resolution,
+                                "must be positive (" + unit + ")");
+  if (!(options.coverage > 0 && options.coverage < 1))
+    throw InvalidInversionInput(kNoRow, "coverage", options.coverage, "allowed (0, 1)");
+  const ForwardModel model(scene, test, log_grid(1e-6, 1e-4, 2), {});
+  const double empty = model.empty_reading(), full = model.full_reading();
+  // Between -10 % and 110 % finer, as a reading.
+  const double lo = std::min(empty - 0.1 * (full - empty), empty + 1.1 * (full - empty));
+  const double hi = std::max(empty - 0.1 * (full - empty), empty + 1.1 * (full - empty));
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    const auto& m = data[i];
+    if (!(m.time > 0) || !std::isfinite(m.time))
+      throw InvalidInversionInput(i, "time_min", m.time / 60.0, "times must be positive");
+    if (i > 0 && !(m.time > data[i - 1].time))
+      throw InvalidInversionInput(
+          i, "time_min", m.time / 60.0,
+          "times must increase (previous row: " + fixed(data[i - 1].time / 60.0, 3) + " min)");
+    if (test == Test::hydrometer) continue;  // the 152H scale is checked on the raw reading
+    const std::string field = test == Test::buoyancy ? "apparent_mass_g" : "dry_mass_g";
+    if (!(m.value >= lo && m.value <= hi) || !std::isfinite(m.value))
+      throw InvalidInversionInput(i, field, m.value,
+                                  "outside " + fixed(lo, 4) + " to " + fixed(hi, 4) +
+                                      " g, the readings of -10 % to 110 % finer for this set-up");
+  }
+}
+
+InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<Measurement>& data,
+                              const InversionOptions& options) {
+  validate_measurements(scene, test, data, options);
+  InvertedCurve out;
+  const double resolution = options.resolution > 0 ? options.resolution : default_resolution(test);
+  out.sigma = resolution / std::sqrt(12.0);
+
+  std::vector<double> times;
+  Eigen::VectorXd measured(Eigen::Index(data.size()));
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    times.push_back(data[i].time);
+    measured(Eigen::Index(i)) = data[i].value;
+    out.measured.push_back(data[i].value);
+  }
+  // The grid: a node at each reading's Stokes diameter, refined between them.
+  {
+    const ForwardModel probe(scene, test, log_grid(1e-6, 1e-4, 2), times);
+    for (const auto& m : data)
+      out.reading_diameter.push_back(probe.model_diameter(m.time, m.value));
+    out.resolved_max = *std::max_element(out.reading_diameter.begin(), out.reading_diameter.end());
+    out.resolved_min = *std::min_element(out.reading_diameter.begin(), out.reading_diameter.end());
+  }
+  const ForwardModel model(scene, test, reading_grid(out.reading_diameter, options.refine), times,
+                           options.subclasses);
+  const Eigen::Index n = Eigen::Index(model.grid().bins());
+  const std::vector<double> widths = bin_widths(model.grid());
+
+  // Gauss-Newton from an even spread (one step for the affine tests).
+  Eigen::VectorXd x = Eigen::VectorXd::Constant(n, 1.0 / double(n));
+  Eigen::MatrixXd j;
+  Problem::Choice choice;
+  for (out.iterations = 1; out.iterations <= options.max_iterations; ++out.iterations) {
+    j = model.jacobian(x);
+    const Problem problem(j, model.readings(x), x, out.sigma, widths);
+    choice = problem.choose(measured, options.tau);
+    const double change = (choice.x - x).cwiseAbs().maxCoeff();
+    x = choice.x;
+    if (model.affine() || change < 1e-5) break;
+  }
+  out.iterations = std::min(out.iterations, options.max_iterations);
+  const Eigen::VectorXd fitted = model.readings(x);
+  out.fitted.assign(fitted.data(), fitted.data() + fitted.size());
+  out.chi2 = ((fitted - measured) / out.sigma).squaredNorm();
+  out.chi2_target = choice.target;
+  out.chi2_floor = choice.floor;
+  out.lambda = choice.mu;
+  out.diameter = model.grid().nodes;
+  out.shares.assign(x.data(), x.data() + x.size());
+  out.percent_finer = curve_of(x);
+
+  // The band: randomize-then-optimize sampling of the posterior that the objective stands
+  // for (Gaussian reading noise of sigma, a Gaussian smoothness prior of weight lambda,
+  // x >= 0), on the model linearised at the fit. Each replica perturbs the measured readings
+  // by an error uniform over one resolution step (what rounding to the graduation leaves)
+  // and the smoothing term by a standard normal vector, and is solved by NNLS at the chosen
+  // lambda; the band is the pointwise quantiles of the replicas' curves. Unlike a bootstrap
+  // around the fit, this also spreads the curve where only the smoothing fixes it.
+  out.coverage = options.coverage;
+  out.replicas = std::max(0, options.bootstrap);
+  if (out.replicas > 0) {
+    if (!model.affine()) j = model.jacobian(x);
+    const Problem problem(j, fitted, x, out.sigma, widths);
+    std::mt19937_64 rng(options.seed);
+    std::uniform_real_distribution<double> noise(-0.5 * resolution, 0.5 * resolution);
+    std::normal_distribution<double> gauss;
+    std::vector<std::vector<double>> curves(out.percent_finer.size());
+    for (int b = 0; b < out.replicas; ++b) {
+      Eigen::VectorXd replica = measured;
+      for (Eigen::Index i = 0; i < replica.size(); ++i) replica(i) += noise(rng);
+      Eigen::VectorXd prior(problem.smoothing_rows());
+      for (Eigen::Index i = 0; i < prior.size(); ++i) prior(i) = gauss(rng);
+      const auto p = curve_of(problem.solve(replica, out.lambda, x, prior));
+      for (std::size_t k = 0; k < p.size(); ++k) curves[k].push_back(p[k]);
+    }
+    const double tail = 0.5 * (1.0 - options.coverage);
+    for (auto& c : curves) {
+      out.lower.push_back(quantile(c, tail));
+      out.upper.push_back(quantile(c, 1.0 - tail));
+    }
+  }
+  return out;
+}
+
+}  // namespace sedem::invert

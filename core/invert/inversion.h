@@ -1,0 +1,90 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/invert/forward_model.h"
+
+namespace sedem::invert {
+
+// One reading as the laboratory took it, in the test's unit (reading_unit).
+struct Measurement {
+  double time = 0;   // s since the start of sedimentation
+  double value = 0;  // 152H: R - composite correction, g/L; sphere: apparent mass, g;
+                     // pipette: dry mass of the sample, g
+};
+
+struct InversionOptions {
+  int refine = 2;           // grid nodes between each two readings' diameters (reading_grid)
+  double resolution = 0;    // of a reading, in its unit; 0: the test's default
+  int subclasses = 8;       // size classes per bin in the forward model
+  int bootstrap = 200;      // replicas for the band (0: no band)
+  double coverage = 0.90;   // of the band, pointwise
+  double tau = 0.7;         // discrepancy factor: chi^2 target (tau sqrt(N) + sqrt(floor))^2
+  std::uint64_t seed = 1;   // of the bootstrap's noise
+  int max_iterations = 12;  // Gauss-Newton steps (the hydrometer)
+};
+
+// The default reading resolutions: 152H 1 g/L (its graduation), the sphere's balance 1 mg,
+// the pipette's analytical balance 0.1 mg.
+double default_resolution(Test test);
+
+// At least this many readings (resolving as many distinct diameters); at most this many
+// nodes between each two.
+inline constexpr std::size_t kMinReadings = 3;
+inline constexpr int kMaxRefine = 6;
+
+struct InvertedCurve {
+  std::vector<double> diameter;          // the grid's nodes, m
+  std::vector<double> percent_finer;     // at the nodes, %
+  std::vector<double> lower, upper;      // the band at `coverage`, % (empty without bootstrap)
+  std::vector<double> shares;            // x: the bins' shares of the mass (finest first)
+  std::vector<double> measured, fitted;  // per reading, in the test's unit
+  double sigma = 0;                      // noise of one reading, resolution / sqrt(12)
+  double lambda = 0;                     // the smoothing weight chosen (dimensionless)
+  double chi2 = 0;                       // sum ((fitted - measured) / sigma)^2
+  double chi2_target = 0;                // what the discrepancy principle aimed at
+  double chi2_floor = 0;                 // the least chi^2 any curve on the grid reaches
+  int iterations = 0;                    // Gauss-Newton steps
+  double coverage = 0;
+  int replicas = 0;
+  double resolved_min = 0, resolved_max = 0;  // reading_diameter's extremes
+  std::vector<double> reading_diameter;  // where each reading pins the curve, m (model_diameter)
+
+  // Linear in log d between nodes; 0 below a decade under the first node, 100 above 4x the
+  // last (the finest and coarsest bins' spans).
+  double at(double diameter) const;
+  double lower_at(double diameter) const;
+  double upper_at(double diameter) const;
+};
+
+// Invalid input for the inversion: names the row (0-based, or kNoRow), the field, the value
+// and the allowed range.
+class InvalidInversionInput : public std::invalid_argument {
+ public:
+  static constexpr std::size_t kNoRow = static_cast<std::size_t>(-1);
+  InvalidInversionInput(std::size_t row, const std::string& field, double value,
+                        const std::string& why);
+  std::size_t row() const { return row_; }
+
+ private:
+  std::size_t row_;
+};
+
+// Checks the readings against the test's set-up: positive, increasing times, at least
+// kMinReadings, values between -10 % and 110 % finer as readings (the 152H's raw reading is
+// checked on its -5..60 scale by validate_lab_readings), refine within [0, kMaxRefine]. Throws
+// InvalidInversionInput.
+void validate_measurements(const Scene& scene, Test test, const std::vector<Measurement>& data,
+                           const InversionOptions& options);
+
+// The grading curve whose forward-modelled readings match `data`: non-negative least
+// squares of the whitened misfit plus lambda times the squared first differences of the
+// bins' mass per log d (zero for a curve linear in log d), with the shares summing to 1;
+// lambda by the discrepancy principle; Gauss-Newton for the hydrometer; the band by a
+// parametric bootstrap of the reading noise. docs/invert.md has the details.
+InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<Measurement>& data,
+                              const InversionOptions& options = {});
+
+}  // namespace sedem::invert

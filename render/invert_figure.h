@@ -1,0 +1,28 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "render/plot.h"
+
+namespace sedem::render {
+
+// `sedem invert`'s figure: the inverted grading curve with its band beside the standard
+// reduction of the same readings (and the true curve when it is known).
+struct InvertFigureInput {
+  std::string title;
+  std::vector<double> diameter_m;  // the inverted curve's nodes
+  std::vector<double> percent_finer, lower, upper;
+  std::string band_name = "band";  // e.g. "90 % band"
+  std::string standard_name;       // e.g. "ASTM D422"
+  std::vector<double> standard_diameter_m, standard_percent_finer;
+  std::vector<double> true_diameter_m, true_percent_finer;  // empty: unknown
+};
+
+Figure invert_figure(const InvertFigureInput& input);
+
+// Writes `<base>.png` and `<base>.csv`.
+void write_invert_figure(const InvertFigureInput& input, const std::filesystem::path& base);
+
+}  // namespace sedem::render

@@ -1,0 +1,155 @@
+// Bad input to the inversion: each gets an error naming the column (or option), the value
+// and what is allowed, and the command exits 2, as `sedem reduce` does. And the command on
+// the clay loam record of docs/invert.md.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/invert/invert_input.h"
+#include "core/lab/lab_csv.h"
+#include "tests/app/cli_runner.h"
+
+namespace sedem::invert {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<Measurement> pipette_readings() {
+  // Dry masses (g) of 35 mL at 0.3 H from the paper's cylinder with 60 g: 1.451 g is 100 %.
+  return {{60, 1.40}, {240, 1.10}, {900, 0.80}, {3600, 0.40}};
+}
+
+std::string message_of(const std::vector<Measurement>& data, Test test,
+                       const InversionOptions& o = {}) {
+  try {
+    validate_measurements(Scene{}, test, data, o);
+  } catch (const InvalidInversionInput& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(InvertInput, AcceptsPlausibleReadings) {
+  EXPECT_EQ(message_of(pipette_readings(), invert::Test::pipette), "");
+}
+
+TEST(InvertInput, TimesNotIncreasing) {
+  auto data = pipette_readings();
+  data[2].time = 200;
+  const auto m = message_of(data, invert::Test::pipette);
+  EXPECT_NE(m.find("row 3, time_min = 3.33333: times must increase (previous row: 4.000 min)"),
+            std::string::npos)
+      << m;
+}
+
+TEST(InvertInput, ReadingOffTheScale) {
+  auto data = pipette_readings();
+  data[1].value = 2.5;  // more than the whole sample in 35 mL
+  const auto m = message_of(data, invert::Test::pipette);
+  EXPECT_NE(m.find("row 2, dry_mass_g = 2.5: outside"), std::string::npos) << m;
+  EXPECT_NE(m.find("-10 % to 110 % finer"), std::string::npos) << m;
+  data = {{60, 11.70}, {240, 11.75}, {900, 12.5}};  // heavier than in clear water (11.819 g)
+  EXPECT_NE(message_of(data, invert::Test::buoyancy).find("row 3, apparent_mass_g = 12.5"),
+            std::string::npos);
+}
+
+TEST(InvertInput, TooFewReadingsOrTooFineAGrid) {
+  auto data = pipette_readings();
+  data.resize(2);
+  EXPECT_NE(message_of(data, invert::Test::pipette)
+                .find("readings = 2: the inversion needs 3 readings or more"),
+            std::string::npos);
+  InversionOptions o;
+  o.refine = 9;
+  EXPECT_NE(message_of(pipette_readings(), invert::Test::pipette, o)
+                .find("refine = 9: allowed 0 to 6 nodes between two readings' diameters"),
+            std::string::npos);
+}
+
+TEST(InvertInput, ReadsTheSphereAndPipetteColumns) {
+  std::istringstream csv("dry_mass_g,time_min\n1.4,1\n1.1,4\n");
+  const auto m = read_measurements_csv(csv, invert::Test::pipette);
+  ASSERT_EQ(m.size(), 2u);
+  EXPECT_DOUBLE_EQ(m[1].time, 240.0);
+  EXPECT_DOUBLE_EQ(m[1].value, 1.1);
+  std::istringstream bad("time_min,dry_mass_g\n1,abc\n");
+  EXPECT_THROW(read_measurements_csv(bad, invert::Test::pipette), LabCsvError);
+  std::istringstream missing("time_min,mass\n1,2\n");
+  try {
+    read_measurements_csv(missing, invert::Test::pipette);
+    FAIL();
+  } catch (const LabCsvError& e) {
+    EXPECT_STREQ(e.what(), "line 1, column dry_mass_g: missing from the header");
+  }
+}
+
+TEST(InvertInput, StandardReductionIsZeroAndHundredAtTheEnds) {
+  const Scene scene;
+  const ForwardModel model(scene, invert::Test::buoyancy, log_grid(1e-6, 1e-4, 2), {});
+  const auto p = standard_reduction(scene, invert::Test::buoyancy,
+                                    {{60, model.empty_reading()}, {120, model.full_reading()}});
+  EXPECT_NEAR(p[0].percent_finer, 0.0, 1e-9);
+  EXPECT_NEAR(p[1].percent_finer, 100.0, 1e-6);
+}
+
+// The command, as a user runs it.
+const fs::path kOut = fs::path(SEDEM_TEST_OUTPUT) / "invert";
+
+fs::path write(const std::string& name, const std::string& text) {
+  fs::create_directories(kOut);
+  std::ofstream(kOut / name) << text;
+  return kOut / name;
+}
+
+const char* kClayLoam =
+    "time_min,reading_g_per_l,temperature_c,composite_correction_g_per_l\n"
+    "0.66,39,23,2\n2,33,23,2\n5,29,23,2\n15,23,23,2\n30,22,23,2\n60,20,23,2\n180,18,23,2\n";
+
+TEST(InvertCommand, ClayLoamRecordWritesCurveBandAndFigure) {
+  const auto file = write("clay_loam.csv", kClayLoam);
+  const auto dir = kOut / "clay_loam";
+  const auto r = test::run_sedem("invert " + file.string() +
+                                 " --test hydrometer --mass-g 50 --gs 2.65 --replicas 50 --out " +
+                                 dir.string() + " -q");
+  ASSERT_EQ(r.status, 0) << r.output;
+  for (const char* f :
+       {"inverted_curve.csv", "readings_fit.csv", "invert.json", "invert.png", "invert.csv"})
+    EXPECT_TRUE(fs::exists(dir / f)) << f;
+  std::ifstream fit(dir / "readings_fit.csv");
+  std::string header;
+  std::getline(fit, header);
+  EXPECT_EQ(header,
+            "time_s,measured_g_per_l,fitted_g_per_l,pinned_diameter_m,inverted_percent_finer,"
+            "standard_diameter_m,standard_percent_finer");
+}
+
+TEST(InvertCommand, BadReadingsExitTwoNamingTheValue) {
+  auto r = test::run_sedem(
+      "invert " +
+      write("off_scale.csv", "time_min,reading_g_per_l,temperature_c\n2,30,20\n5,65,20\n15,20,20\n")
+          .string() +
+      " --test hydrometer --out " + (kOut / "x").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("row 2, reading_g_per_l = 65: off the 152H scale (-5 to 60 g/L)"),
+            std::string::npos)
+      << r.output;
+  r = test::run_sedem(
+      "invert " +
+      write("two.csv", "time_min,reading_g_per_l,temperature_c\n2,30,20\n5,25,20\n").string() +
+      " --test hydrometer --out " + (kOut / "x").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("readings = 2: the inversion needs 3 readings or more"),
+            std::string::npos)
+      << r.output;
+  r = test::run_sedem("invert " +
+                      write("back.csv", "time_min,dry_mass_g\n1,1.4\n4,1.1\n2,0.9\n").string() +
+                      " --test pipette --out " + (kOut / "x").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("row 3, time_min = 2: times must increase"), std::string::npos)
+      << r.output;
+}
+
+}  // namespace
+}  // namespace sedem::invert
