@@ -2,6 +2,8 @@
 
 #include <sys/resource.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
@@ -57,6 +59,7 @@ void write_run_record(const RunRecord& r, Scene& scene, const std::filesystem::p
   j["simulated_time_s"] = r.simulated_time;
   j["wall_time_s"] = r.wall_time;
   j["particle_steps_per_s"] = r.wall_time > 0 ? r.particle_steps / r.wall_time : 0.0;
+  j["legs"] = r.legs;
   j["peak_memory_bytes"] = peak_memory_bytes();
   j["results"] = r.results;
   auto tmp = file;
@@ -65,7 +68,13 @@ void write_run_record(const RunRecord& r, Scene& scene, const std::filesystem::p
     std::ofstream out(tmp);
     out << j.dump(2) << '\n';
     out.flush();
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
+    if (!out) {
+      const int e = errno;
+      std::error_code ec;
+      std::filesystem::remove(tmp, ec);
+      throw std::runtime_error("cannot write " + tmp.string() + ": " +
+                               (e ? std::strerror(e) : "write error"));
+    }
   }
   std::filesystem::rename(tmp, file);
 }

@@ -1,5 +1,8 @@
 #include "app/test_outputs.h"
 
+#include <cerrno>
+#include <cmath>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
@@ -21,17 +24,44 @@ void write_atomically(const fs::path& file, Write&& write) {
     std::ofstream out(tmp);
     write(out);
     out.flush();
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
+    if (!out) {
+      const int e = errno;
+      std::error_code ec;
+      std::filesystem::remove(tmp, ec);
+      throw std::runtime_error("cannot write " + tmp.string() + ": " +
+                               (e ? std::strerror(e) : "write error"));
+    }
   }
   fs::rename(tmp, file);
 }
 
 }  // namespace
 
+namespace {
+
+// A figure that cannot be computed (a reading that is no number) is null, with a note: never
+// NaN counted as perfect, never "inf" in run.json.
+nlohmann::json figure(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+}
+
+}  // namespace
+
 nlohmann::json results_json(const TestResults& results) {
   nlohmann::json j = nlohmann::json::object();
-  for (const auto& t : results.granulometry.tests)
-    j[t.test] = {{"error_pp", t.error}, {"bias_pp", t.bias}, {"readings", t.dem.rows.size()}};
+  for (const auto& t : results.granulometry.tests) {
+    nlohmann::json r = {{"error_pp", figure(t.error)},
+                        {"bias_pp", figure(t.bias)},
+                        {"readings", t.dem.rows.size()}};
+    if (!std::isfinite(t.error) || !std::isfinite(t.bias))
+      r["note"] = "cannot be computed: a reading of the test or of its reference is not a number";
+    if (t.test == "hydrometer") {
+      std::size_t off = 0;
+      for (const auto& h : results.hydrometer) off += h.on_scale ? 0 : 1;
+      r["off_scale_readings"] = off;
+    }
+    j[t.test] = r;
+  }
   return j;
 }
 
