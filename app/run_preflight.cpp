@@ -73,8 +73,14 @@ std::size_t estimate_run_bytes(const Scene& scene, std::string* key) {
 std::size_t usable_memory_bytes() {
   std::size_t limit = meminfo_available();
   rlimit as{};
-  if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY)
-    limit = std::min(limit, std::size_t(as.rlim_cur));
+  if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) {
+    // The limit counts the address space already taken (libraries, Qt, VTK).
+    std::size_t taken = 0;
+    std::ifstream statm("/proc/self/statm");
+    if (statm >> taken) taken *= std::size_t(::sysconf(_SC_PAGESIZE));
+    const std::size_t cap = std::size_t(as.rlim_cur);
+    limit = std::min(limit, cap > taken ? cap - taken : 0);
+  }
   return limit;
 }
 

@@ -17,8 +17,8 @@ namespace sedem::app {
 // scene key that dominates it.
 std::size_t estimate_run_bytes(const Scene& scene, std::string* key = nullptr);
 
-// Memory this process may use: the smaller of the memory available on the machine and the
-// address-space limit (ulimit -v), bytes.
+// Memory this process may still use: the smaller of the memory available on the machine and
+// what the address-space limit (ulimit -v) leaves, bytes.
 std::size_t usable_memory_bytes();
 
 // Empty if the run fits; else the message, with the estimate and the machine's memory.

@@ -2,11 +2,10 @@
 
 #include <sys/resource.h>
 
-#include <cerrno>
-#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
+#include "app/atomic_write.h"
 #include "core/scene/scene_loader.h"
 
 namespace sedem::app {
@@ -62,21 +61,7 @@ void write_run_record(const RunRecord& r, Scene& scene, const std::filesystem::p
   j["legs"] = r.legs;
   j["peak_memory_bytes"] = peak_memory_bytes();
   j["results"] = r.results;
-  auto tmp = file;
-  tmp += ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << j.dump(2) << '\n';
-    out.flush();
-    if (!out) {
-      const int e = errno;
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      throw std::runtime_error("cannot write " + tmp.string() + ": " +
-                               (e ? std::strerror(e) : "write error"));
-    }
-  }
-  std::filesystem::rename(tmp, file);
+  write_atomically(file, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
 }
 
 }  // namespace sedem::app

@@ -1,41 +1,16 @@
 #include "app/test_outputs.h"
 
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
+#include "app/atomic_write.h"
 #include "app/figure_inputs.h"
 #include "core/instruments/readings_csv.h"
 #include "render/hydrometer_writer.h"
 
 namespace sedem::app {
 namespace fs = std::filesystem;
-
-namespace {
-
-// Writes through a temporary file renamed into place: a reader never sees half a file.
-template <class Write>
-void write_atomically(const fs::path& file, Write&& write) {
-  auto tmp = file;
-  tmp += ".tmp";
-  {
-    std::ofstream out(tmp);
-    write(out);
-    out.flush();
-    if (!out) {
-      const int e = errno;
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      throw std::runtime_error("cannot write " + tmp.string() + ": " +
-                               (e ? std::strerror(e) : "write error"));
-    }
-  }
-  fs::rename(tmp, file);
-}
-
-}  // namespace
 
 namespace {
 

@@ -323,17 +323,16 @@ TEST(Faults, AKilledRunResumesFromItsLastCheckpointBitForBit) {
   std::string command = "run " + scene + " --out " + parts.string();
   int kills = 0;
   for (int leg = 0; leg < 3; ++leg) {
-    const double delay = 0.5 + std::uniform_real_distribution<double>(0, 1)(rng);
-    auto r = test::run_sedem(command + " & pid=$!; sleep " + std::to_string(delay) +
-                             "; kill -KILL $pid; wait $pid");
+    // Killed at a random moment after the first checkpoint exists (the first leg waits for
+    // it, however loaded the machine): a resumed leg may be killed before it writes its own.
+    const double delay = 0.2 + std::uniform_real_distribution<double>(0, 1)(rng);
+    auto r = test::run_sedem(command + " & pid=$!; for i in $(seq 600); do [ -f " + parts.string() +
+                             "/checkpoint.json ] && break; sleep 0.05; done; " + "sleep " +
+                             std::to_string(delay) + "; kill -KILL $pid; wait $pid");
     if (r.status == 0) break;  // it ended before the kill
     ASSERT_EQ(r.status, 137) << r.output;
+    ASSERT_TRUE(fs::exists(parts / "checkpoint.bin"));
     ++kills;
-    if (!fs::exists(parts / "checkpoint.bin")) {
-      // Killed before its first checkpoint: nothing to resume, start again.
-      ASSERT_EQ(leg, 0);
-      continue;
-    }
     command = "run --resume " + parts.string() + " --quiet";
   }
   ASSERT_GT(kills, 0);
@@ -363,22 +362,6 @@ TEST(Faults, UnwritableOutputsAreFoundBeforeSimulating) {
   EXPECT_EQ(r.status, 3) << r.output;
   EXPECT_NE(r.output.find("figures"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out / "run.json"));
-}
-
-TEST(Faults, AFullDiskKeepsTheFirstCauseAndLeavesNoTemporaryFiles) {
-  const fs::path out = fresh("full");
-  auto r = test::run_sedem(
-      "--version > /dev/null; ( trap '' XFSZ; ulimit -f 64; exec " SEDEM_EXE " run " + kDemo +
-      " --out " + out.string() + " --set output.frames=false --quiet )");
-  EXPECT_EQ(r.status, 4) << r.output;
-  EXPECT_NE(r.output.find("writing the outputs failed: cannot write"), std::string::npos)
-      << r.output;
-  const auto record = read_json(out / "run.json");
-  EXPECT_EQ(record["status"], "failed");
-  EXPECT_NE(record["message"].get<std::string>().find("writing the outputs failed"),
-            std::string::npos);
-  for (const auto& e : fs::recursive_directory_iterator(out))
-    EXPECT_NE(e.path().extension(), ".tmp") << e.path();
 }
 
 // 13. A huge name is refused by its length.
