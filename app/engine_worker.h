@@ -4,7 +4,9 @@
 #include <QSemaphore>
 
 #include <atomic>
+#include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/engine/engine.h"
@@ -33,6 +35,15 @@ class EngineWorker : public QObject {
   // The main thread calls this when it has finished with a snapshot.
   void release() { slots_.release(); }
 
+  // Every `seconds` of wall time (0: never) the engine pauses once the main thread has
+  // finished with every snapshot before it, and `save` is called on this thread with a
+  // function that writes the engine's state to a path: a checkpoint a kill cannot undo.
+  using Checkpointer = std::function<void(const std::function<void(const std::string&)>&)>;
+  void checkpoint_every(double seconds, Checkpointer save) {
+    checkpoint_every_ = seconds;
+    checkpointer_ = std::move(save);
+  }
+
  public slots:
   void start();
 
@@ -40,6 +51,8 @@ class EngineWorker : public QObject {
   void snapshotReady(std::shared_ptr<const sedem::Snapshot> snapshot);
   void progress(double simulated_time, double particle_steps);
   void failed(QString message);
+  // Something went wrong that does not stop the run (a periodic checkpoint not written).
+  void warning(QString message);
   // `completed` is false when the run was stopped before its last scheduled time.
   void finished(bool completed);
 
@@ -48,6 +61,10 @@ class EngineWorker : public QObject {
   QSemaphore slots_;
   std::atomic<bool> stop_{false}, abort_{false};
   bool hand_over(Snapshot snapshot);
+  bool checkpoint_now();
+  int capacity_;
+  double checkpoint_every_ = 0;
+  Checkpointer checkpointer_;
 };
 
 }  // namespace sedem::app

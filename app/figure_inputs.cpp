@@ -1,10 +1,17 @@
 #include "app/figure_inputs.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace sedem::app {
 namespace {
+
+// A point some of whose values are no finite number (a reading that cannot be computed) is
+// left out of a figure and of its CSV: no NaN or inf is drawn or written.
+bool finite(std::initializer_list<double> values) {
+  return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
+}
 
 const TestComparison* find_test(const TestResults& r, const std::string& test) {
   for (const auto& t : r.granulometry.tests)
@@ -22,6 +29,7 @@ std::size_t column(const TestReadings& t, const std::string& name) {
 render::GradingCurve curve(const std::string& name, const TestReadings& t) {
   render::GradingCurve c{name, {}, {}};
   for (const auto& row : t.rows) {
+    if (!finite({row.diameter, row.percent_finer})) continue;
     c.diameter_m.push_back(row.diameter);
     c.percent_finer.push_back(row.percent_finer);
   }
@@ -70,6 +78,7 @@ std::vector<render::BulbAverageSeries> fig14_input(const std::vector<LabelledRes
   for (const auto& run : runs) {
     render::BulbAverageSeries s{run.label, {}, {}, {}};
     for (const auto& h : run.results.hydrometer) {
+      if (!finite({h.time, h.bulb_mean_density, h.density_eq19})) continue;
       s.time_s.push_back(h.time);
       s.simulated_kg_m3.push_back(h.bulb_mean_density);
       s.eq19_kg_m3.push_back(h.density_eq19);
@@ -84,6 +93,7 @@ std::vector<render::HydrometerSeries> fig15_input(const std::vector<LabelledResu
   for (const auto& run : runs) {
     render::HydrometerSeries s{run.label, {}, {}, {}, {}};
     for (const auto& h : run.results.hydrometer) {
+      if (!finite({h.time, h.centre_depth, h.diameter, h.percent_finer})) continue;
       s.time_s.push_back(h.time);
       s.centre_depth_m.push_back(h.centre_depth);
       s.diameter_m.push_back(h.diameter);
@@ -102,6 +112,7 @@ std::vector<render::BuoyancySeries> fig16_input(const std::vector<LabelledResult
     const std::size_t mass = column(t->dem, "apparent_mass_kg");
     render::BuoyancySeries s{run.label, {}, {}, {}, {}};
     for (const auto& row : t->dem.rows) {
+      if (!finite({row.time, row.extra[mass], row.diameter, row.percent_finer})) continue;
       s.time_s.push_back(row.time);
       s.apparent_mass_kg.push_back(row.extra[mass]);
       s.diameter_m.push_back(row.diameter);
@@ -119,6 +130,7 @@ std::vector<render::PipetteSeries> fig17_input(const std::vector<LabelledResults
     if (!t) continue;
     render::PipetteSeries s{run.label, {}, {}, {}};
     for (const auto& row : t->dem.rows) {
+      if (!finite({row.time, row.diameter, row.percent_finer})) continue;
       s.time_s.push_back(row.time);
       s.diameter_m.push_back(row.diameter);
       s.percent_finer.push_back(row.percent_finer);

@@ -3,6 +3,9 @@
 #include <CLI/CLI.hpp>
 #include <QGuiApplication>
 
+#include <cstdio>
+#include <new>
+
 #include "app/batch_command.h"
 #include "app/bench_command.h"
 #include "app/exit_codes.h"
@@ -144,10 +147,16 @@ int main(int argc, char** argv) {
   vtkObject::GlobalWarningDisplayOff();
   use_offscreen_platform();
   QGuiApplication qt(argc, argv);
-  if (run_cmd->parsed()) return run(run_options);
-  if (batch_cmd->parsed()) return batch(batch_options);
-  if (render_cmd->parsed()) return render_runs(render_options);
-  if (reduce_cmd->parsed()) return reduce(reduce_options);
-  if (invert_cmd->parsed()) return invert(invert_options);
+  try {
+    if (run_cmd->parsed()) return run(run_options);
+    if (batch_cmd->parsed()) return batch(batch_options);
+    if (render_cmd->parsed()) return render_runs(render_options);
+    if (reduce_cmd->parsed()) return reduce(reduce_options);
+    if (invert_cmd->parsed()) return invert(invert_options);
+  } catch (const std::bad_alloc&) {
+    // Out of memory anywhere a command did not handle it: a message, never an abort.
+    std::fputs("sedem: out of memory\n", stderr);
+    return exit_code::engine_failure;
+  }
   return exit_code::usage;
 }

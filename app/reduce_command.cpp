@@ -1,8 +1,12 @@
 #include "app/reduce_command.h"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "app/exit_codes.h"
 #include "core/lab/hydrometer_reduction.h"
@@ -10,10 +14,27 @@
 
 namespace sedem::app {
 
+namespace {
+
+// The largest readings file read: a laboratory's CSV is a few kilobytes.
+constexpr std::uintmax_t kMaxReadingsBytes = 16u << 20;
+
+}  // namespace
+
 int reduce(const ReduceOptions& options) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(options.readings, ec);
+  if (!ec && std::filesystem::exists(status) &&
+      (!std::filesystem::is_regular_file(status) ||
+       std::filesystem::file_size(options.readings, ec) > kMaxReadingsBytes)) {
+    std::fprintf(stderr, "sedem: %s: not a readings file (a folder, a device or over 16 MB)\n",
+                 options.readings.c_str());
+    return exit_code::invalid_scene;
+  }
   std::ifstream in(options.readings);
   if (!in) {
-    std::fprintf(stderr, "sedem: %s: cannot open the readings file\n", options.readings.c_str());
+    std::fprintf(stderr, "sedem: %s: cannot open the readings file: %s\n", options.readings.c_str(),
+                 std::strerror(errno));
     return exit_code::invalid_scene;
   }
   std::vector<LabPoint> points;
@@ -26,16 +47,43 @@ int reduce(const ReduceOptions& options) {
     std::fprintf(stderr, "sedem: %s: %s\n", options.readings.c_str(), e.what());
     return exit_code::invalid_scene;
   }
+  for (const auto& p : points)
+    if (p.percent_finer > 100)
+      std::fprintf(stderr, "sedem: warning: percent finer %.1f %% at %.0f s is above 100 %%\n",
+                   p.percent_finer, p.time);
+  std::ostringstream text;
+  write_lab_points_csv(text, points);
   if (options.out.empty()) {
-    write_lab_points_csv(std::cout, points);
-    return std::cout ? exit_code::ok : exit_code::io_failure;
+    // Checked after a flush: a full disk or a closed pipe is an error, not a silent loss.
+    errno = 0;
+    std::cout << text.str();
+    std::cout.flush();
+    if (!std::cout || std::fflush(stdout) != 0) {
+      std::fprintf(stderr, "sedem: cannot write the standard output: %s\n",
+                   errno ? std::strerror(errno) : "write error");
+      return exit_code::io_failure;
+    }
+    return exit_code::ok;
   }
-  std::ofstream out(options.out);
-  write_lab_points_csv(out, points);
-  out.flush();
-  if (!out) {
-    std::fprintf(stderr, "sedem: cannot write %s\n", options.out.c_str());
+  // Through a temporary file renamed into place: a failed write leaves no half file.
+  const std::string tmp = options.out + ".tmp";
+  FILE* f = std::fopen(tmp.c_str(), "w");
+  if (!f) {
+    std::fprintf(stderr, "sedem: cannot write %s: %s\n", options.out.c_str(), std::strerror(errno));
     return exit_code::output_unwritable;
+  }
+  const std::string s = text.str();
+  errno = 0;
+  const bool written = std::fwrite(s.data(), 1, s.size(), f) == s.size();
+  const int write_errno = errno;
+  const bool closed = std::fclose(f) == 0;
+  const int close_errno = errno;
+  if (!written || !closed || std::rename(tmp.c_str(), options.out.c_str()) != 0) {
+    const int e = !written ? write_errno : !closed ? close_errno : errno;
+    std::fprintf(stderr, "sedem: cannot write %s: %s\n", options.out.c_str(),
+                 e ? std::strerror(e) : "write error");
+    std::remove(tmp.c_str());
+    return exit_code::io_failure;
   }
   return exit_code::ok;
 }

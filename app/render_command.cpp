@@ -31,20 +31,47 @@ LabelledResults render_one(const fs::path& dir, bool quiet) {
                         exit_code::invalid_scene);
   Scene scene;
   try {
-    scene = scene_from_json(nlohmann::json::parse(in).at("scene"), (dir / "run.json").string());
+    const auto record = nlohmann::json::parse(in);
+    if (!record.at("scene").is_object())
+      throw RenderFailure((dir / "run.json").string() + ": not a sedem run record",
+                          exit_code::invalid_scene);
+    scene = scene_from_json(record.at("scene"), (dir / "run.json").string());
   } catch (const nlohmann::json::exception& e) {
     throw RenderFailure((dir / "run.json").string() + ": " + e.what(), exit_code::invalid_scene);
   } catch (const SceneError& e) {
     throw RenderFailure(e.what(), exit_code::invalid_scene);
   }
-  const Sample sample = build_sample(scene);
+  Sample sample;
+  try {
+    sample = build_sample(scene);
+  } catch (const SceneError& e) {
+    throw RenderFailure(e.what(), exit_code::invalid_scene);
+  }
+  // Every saved file is read and checked before anything is rewritten: a damaged series is
+  // refused (exit 2, naming the file), never rendered as far as it goes.
+  std::vector<std::pair<double, std::string>> entries;
+  auto read = [&](const std::string& file, double time) {
+    Snapshot snap = render::read_particles_vtp(dir / file);
+    if (snap.particles.size() != sample.particles.size() || snap.time != time)
+      throw RenderFailure(
+          (dir / file).string() + ": holds " + std::to_string(snap.particles.size()) +
+              " particles at t = " + std::to_string(snap.time) +
+              " s; particles.pvd and run.json say " + std::to_string(sample.particles.size()) +
+              " at t = " + std::to_string(time) + " s",
+          exit_code::invalid_scene);
+    return snap;
+  };
+  try {
+    entries = render::read_pvd(dir / "particles.pvd");
+    if (entries.empty())
+      throw RenderFailure((dir / "particles.pvd").string() + ": no particle files to render from",
+                          exit_code::invalid_scene);
+    for (const auto& [time, file] : entries) read(file, time);
+  } catch (const render::SeriesError& e) {
+    throw RenderFailure(e.what(), exit_code::invalid_scene);
+  }
   RunObservers observers = make_observers(scene, sample, dir, {.write_particles = false});
-  const auto entries = render::read_pvd(dir / "particles.pvd");
-  if (entries.empty())
-    throw RenderFailure((dir / "particles.pvd").string() + ": no particle files to render from",
-                        exit_code::invalid_scene);
-  for (const auto& [time, file] : entries)
-    dispatch(observers.all, render::read_particles_vtp(dir / file));
+  for (const auto& [time, file] : entries) dispatch(observers.all, read(file, time));
   for (auto& o : observers.all) o->finish();
   write_test_outputs(scene, observers, dir);
   if (!quiet) std::printf("sedem: redrew %s from %zu snapshots\n", dir.c_str(), entries.size());

@@ -4,16 +4,19 @@
 #include <QThread>
 #include <QTimer>
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <optional>
 
+#include "app/checkpoint_file.h"
 #include "app/engine_worker.h"
 #include "app/exit_codes.h"
 #include "app/output_observers.h"
 #include "app/progress.h"
+#include "app/run_preflight.h"
 #include "app/run_record.h"
 #include "app/stop_signals.h"
 #include "app/test_outputs.h"
@@ -26,7 +29,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* kCheckpoint = "checkpoint.bin";
+const char* kCheckpoint = kCheckpointFile;
 
 struct Failure {
   int status;
@@ -44,7 +47,7 @@ std::vector<double> schedule_of(const std::vector<std::unique_ptr<Observer>>& ob
 }
 
 // A resumed run: its scene as the interrupted run resolved it.
-Scene scene_of_run(const fs::path& dir) {
+Scene scene_of_run(const fs::path& dir, std::string& scene_file) {
   std::ifstream in(dir / "run.json");
   if (!in)
     throw Failure{exit_code::invalid_scene, (dir / "run.json").string() + ": cannot read it"};
@@ -56,8 +59,14 @@ Scene scene_of_run(const fs::path& dir) {
     throw Failure{exit_code::ok, dir.string() + " holds a complete run: nothing to resume"};
   if (!fs::exists(dir / kCheckpoint))
     throw Failure{exit_code::invalid_scene, dir.string() + ": no " + kCheckpoint +
-                                                " to resume from (only a run stopped by "
-                                                "Ctrl-C or SIGTERM leaves one)"};
+                                                " to resume from (a run leaves one when stopped "
+                                                "by Ctrl-C or SIGTERM, and every "
+                                                "run.checkpoint_interval_s while it runs)"};
+  if (record.contains("scene_file") && record["scene_file"].is_string())
+    scene_file = record["scene_file"].get<std::string>();
+  if (!record["scene"].is_object())
+    throw Failure{exit_code::invalid_scene,
+                  (dir / "run.json").string() + ": not a sedem run record (no scene)"};
   try {
     return scene_from_json(record["scene"], (dir / "run.json").string());
   } catch (const SceneError& e) {
@@ -67,13 +76,21 @@ Scene scene_of_run(const fs::path& dir) {
 
 // The observers that accumulate see the saved snapshots before `until` again, so that a
 // resumed run's readings are those of a run that never stopped.
-void replay(const RunObservers& observers, const fs::path& dir, double until) {
+void replay(const RunObservers& observers, const fs::path& dir, double until,
+            std::size_t expected_particles) {
   bool any = false;
   for (const auto& o : observers.all) any = any || o->accumulates();
   if (!any) return;
   for (const auto& [time, file] : render::read_pvd(dir / "particles.pvd")) {
     if (time >= until) break;
     const Snapshot snap = render::read_particles_vtp(dir / file);
+    if (snap.particles.size() != expected_particles)
+      throw std::runtime_error((dir / file).string() + ": holds " +
+                               std::to_string(snap.particles.size()) + " particles, not " +
+                               std::to_string(expected_particles));
+    if (snap.time != time)
+      throw std::runtime_error((dir / file).string() + ": its time " + std::to_string(snap.time) +
+                               " s differs from particles.pvd's " + std::to_string(time) + " s");
     for (const auto& o : observers.all)
       if (o->accumulates() && contains_time(o->wanted_times(), snap.time)) o->observe(snap);
   }
@@ -81,16 +98,46 @@ void replay(const RunObservers& observers, const fs::path& dir, double until) {
 
 }  // namespace
 
-int run(const RunOptions& options) {
+namespace {
+
+// What the handler of an allocation failure needs to finish run.json.
+struct RunContext {
+  Scene scene;
+  RunRecord record;
+  fs::path out;
+  bool record_started = false;
+};
+
+// The first failure is the one reported: a later one (often its consequence) does not
+// replace it.
+void fail(RunRecord& record, int& status, int code, const std::string& message) {
+  if (record.message.empty()) record.message = message;
+  if (status == exit_code::ok || status == exit_code::interrupted) status = code;
+}
+
+std::string engine_message(const std::string& what) {
+  if (what.find("bad_alloc") != std::string::npos)
+    return "out of memory: the simulation could not allocate what it needs (" + what +
+           "); lower sample.simulated_count or raise forces.voidage_cell_mm";
+  return "the engine failed: " + what;
+}
+
+int run_in(const RunOptions& options, RunContext& ctx) {
   auto& qt = *QCoreApplication::instance();
   qRegisterMetaType<std::shared_ptr<const Snapshot>>();
   const bool resuming = !options.resume_dir.empty();
   const fs::path out = resuming ? options.resume_dir : options.out_dir;
+  ctx.out = out;
+  Scene& scene = ctx.scene;
+  RunRecord& record = ctx.record;
 
-  Scene scene;
   Sample sample;
+  std::string first_scene_file = options.scene;
   try {
-    scene = resuming ? scene_of_run(out) : load_scene(options.scene, options.overrides);
+    scene = resuming ? scene_of_run(out, first_scene_file)
+                     : load_scene(options.scene, options.overrides);
+    if (const std::string refusal = memory_refusal(scene); !refusal.empty())
+      throw Failure{exit_code::invalid_scene, refusal};
     sample = build_sample(scene);
   } catch (const SceneError& e) {
     std::cerr << "sedem: invalid scene: " << e.what() << '\n';
@@ -100,23 +147,59 @@ int run(const RunOptions& options) {
     return f.status;
   }
 
-  RunRecord record;
-  record.scene_file = resuming ? (out / "run.json").string() : options.scene;
+  // A resumed run goes on from a checkpoint that proves it belongs to this run.
+  const std::string identity = run_identity(scene);
+  CheckpointRecord previous;
+  if (resuming) {
+    try {
+      previous = read_checkpoint_record(out, identity);
+    } catch (const std::exception& e) {
+      std::cerr << "sedem: cannot resume: " << e.what() << '\n';
+      return exit_code::invalid_scene;
+    }
+    if (!previous.scene_file.empty()) first_scene_file = previous.scene_file;
+  }
+
+  // Every place the run writes to, checked before anything is simulated.
+  if (const std::string unwritable = check_writable(out, scene); !unwritable.empty()) {
+    std::cerr << "sedem: cannot write to the output folder: " << unwritable << '\n';
+    return exit_code::output_unwritable;
+  }
+  record.scene_file = first_scene_file;
   record.seed = scene.sample.seed;
   record.particle_count = sample.particles.size();
+  record.legs = resuming ? previous.legs + 1 : 1;
   try {
-    fs::create_directories(out);
+    // A new run into a folder: a checkpoint left there by another run is not this one's.
+    if (!resuming) remove_checkpoint(out);
     write_run_record(record, scene, out / "run.json");
   } catch (const std::exception& e) {
     std::cerr << "sedem: cannot write to the output folder " << out << ": " << e.what() << '\n';
     return exit_code::output_unwritable;
   }
+  ctx.record_started = true;
 
   Engine engine(scene, sample);  // a copy: the observers need the sample too
   ObserverStart start;
+  int status = exit_code::ok;
+  auto finish_failed = [&](int code, const std::string& message) {
+    fail(record, status, code, message);
+    record.status = "failed";
+    try {
+      write_run_record(record, scene, out / "run.json");
+    } catch (const std::exception&) {
+    }
+    remove_temporary_files(out);
+    std::cerr << "sedem: " << record.message << '\n';
+    return status;
+  };
   if (resuming) {
     try {
       engine.load_checkpoint((out / kCheckpoint).string());
+      if (!(engine.time() == previous.time))
+        throw std::runtime_error("its time " + std::to_string(engine.time()) +
+                                 " s differs from the record's " + std::to_string(previous.time) +
+                                 " s");
     } catch (const std::exception& e) {
       std::cerr << "sedem: cannot resume from " << out / kCheckpoint << ": " << e.what() << '\n';
       return exit_code::invalid_scene;
@@ -132,39 +215,75 @@ int run(const RunOptions& options) {
   RunObservers run_observers;
   try {
     run_observers = make_observers(scene, sample, out, start);
-    if (resuming) replay(run_observers, out, engine.time());
+  } catch (const render::SeriesError& e) {
+    std::cerr << "sedem: cannot resume: the saved series is damaged: " << e.what() << '\n';
+    return exit_code::invalid_scene;
   } catch (const std::exception& e) {
-    std::cerr << "sedem: cannot prepare the outputs in " << out << ": " << e.what() << '\n';
-    return exit_code::output_unwritable;
+    return finish_failed(exit_code::output_unwritable,
+                         "cannot prepare the outputs in " + out.string() + ": " + e.what());
   }
+  if (resuming) {
+    try {
+      replay(run_observers, out, engine.time(), sample.particles.size());
+    } catch (const std::exception& e) {
+      std::cerr << "sedem: cannot resume: the saved series is damaged: " << e.what() << '\n';
+      return exit_code::invalid_scene;
+    }
+  }
+
+  const auto leg_start = std::chrono::steady_clock::now();
+  auto wall_so_far = [&] {
+    return previous.wall_time +
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - leg_start).count();
+  };
+  auto checkpoint_record = [&] {
+    CheckpointRecord c;
+    c.identity = identity;
+    c.time = engine.time();
+    c.wall_time = wall_so_far();
+    c.legs = record.legs;
+    c.scene_file = record.scene_file;
+    return c;
+  };
 
   auto& observers = run_observers.all;
   EngineWorker worker(engine, schedule_of(observers, scene.end_time, engine.time()));
+  // Periodic checkpoints, on the engine's thread while the engine rests.
+  worker.checkpoint_every(scene.checkpoint_interval, [&](const auto& write_engine) {
+    write_checkpoint(out, write_engine, checkpoint_record());
+  });
   QThread thread;
   worker.moveToThread(&thread);
   Progress progress(scene.end_time, options.quiet);
-  int status = exit_code::ok;
 
   QObject::connect(&thread, &QThread::started, &worker, &EngineWorker::start);
   QObject::connect(
       &worker, &EngineWorker::snapshotReady, &qt,
       [&](std::shared_ptr<const Snapshot> snap) {
-        try {
-          dispatch(observers, *snap);
-        } catch (const std::exception& e) {
-          record.message = std::string("writing the outputs failed: ") + e.what();
-          status = exit_code::io_failure;
-          worker.stop();
-          qt.exit(status);
+        if (status == exit_code::ok) {
+          try {
+            dispatch(observers, *snap);
+          } catch (const std::bad_alloc& e) {
+            fail(record, status, exit_code::engine_failure, engine_message(e.what()));
+            worker.stop();
+            qt.exit(status);
+          } catch (const std::exception& e) {
+            fail(record, status, exit_code::io_failure,
+                 std::string("writing the outputs failed: ") + e.what());
+            worker.stop();
+            qt.exit(status);
+          }
         }
         worker.release();
       },
       Qt::QueuedConnection);
   QObject::connect(&worker, &EngineWorker::progress, &qt,
                    [&](double t, double steps) { progress.update(t, steps); });
+  QObject::connect(&worker, &EngineWorker::warning, &qt, [&](const QString& message) {
+    std::cerr << "sedem: warning: " << message.toStdString() << '\n';
+  });
   QObject::connect(&worker, &EngineWorker::failed, &qt, [&](const QString& message) {
-    record.message = "the engine failed: " + message.toStdString();
-    status = exit_code::engine_failure;
+    fail(record, status, exit_code::engine_failure, engine_message(message.toStdString()));
     qt.exit(status);
   });
   QObject::connect(&worker, &EngineWorker::finished, &qt, [&](bool completed) {
@@ -187,33 +306,46 @@ int run(const RunOptions& options) {
   // The engine thread has ended: the engine rests between two steps.
   if (status == exit_code::interrupted) {
     try {
-      engine.save_checkpoint((out / kCheckpoint).string());
+      write_checkpoint(
+          out, [&](const std::string& path) { engine.save_checkpoint(path); }, checkpoint_record());
     } catch (const std::exception& e) {
-      record.message = std::string("the checkpoint could not be written: ") + e.what();
+      fail(record, status, exit_code::io_failure,
+           std::string("the checkpoint could not be written: ") + e.what());
     }
   } else if (status == exit_code::ok) {
-    fs::remove(out / kCheckpoint);
+    remove_checkpoint(out);
   }
   try {
     for (auto& o : observers) o->finish();
     record.results = write_test_outputs(scene, run_observers, out);
+  } catch (const std::bad_alloc& e) {
+    fail(record, status, exit_code::engine_failure, engine_message(e.what()));
   } catch (const std::exception& e) {
-    record.message = std::string("writing the test results failed: ") + e.what();
-    if (status == exit_code::ok || status == exit_code::interrupted) status = exit_code::io_failure;
+    fail(record, status, exit_code::io_failure,
+         std::string("writing the test results failed: ") + e.what());
   }
+  if (status != exit_code::ok && status != exit_code::interrupted) remove_temporary_files(out);
   record.status = status == exit_code::ok            ? "complete"
                   : status == exit_code::interrupted ? "interrupted"
                                                      : "failed";
   record.steps = engine.stats().steps;
   record.simulated_time = engine.time();
-  record.wall_time = progress.wall_seconds();
+  // Every leg of a resumed run: its wall time and its particle-steps (the engine's counts go
+  // on from the checkpoint).
+  record.wall_time = wall_so_far();
   record.particle_steps = engine.stats().particle_steps;
   try {
     write_run_record(record, scene, out / "run.json");
   } catch (const std::exception& e) {
-    std::cerr << "sedem: " << e.what() << '\n';
-    if (status == exit_code::ok) status = exit_code::io_failure;
+    fail(record, status, exit_code::io_failure, e.what());
+    remove_temporary_files(out);
   }
+  if (status == exit_code::ok && !options.quiet)
+    if (const auto& r = record.results;
+        r.contains("hydrometer") && r["hydrometer"].value("off_scale_readings", 0) > 0)
+      std::cerr << "sedem: warning: " << r["hydrometer"]["off_scale_readings"].get<int>()
+                << " hydrometer reading(s) lie off the 152H scale (-5 to 60 g/L) or with the "
+                   "bulb out of the liquid; see on_scale in readings_hydrometer.csv\n";
   if (status == exit_code::interrupted)
     std::cerr << "sedem: stopped at t = " << engine.time() << " s; what was computed is in "
               << out.string() << "; go on with: sedem run --resume " << out.string() << '\n';
@@ -222,6 +354,29 @@ int run(const RunOptions& options) {
   else if (!options.quiet)
     std::printf("sedem: done in %.1f s; wrote %s\n", record.wall_time, out.c_str());
   return status;
+}
+
+}  // namespace
+
+int run(const RunOptions& options) {
+  RunContext ctx;
+  try {
+    return run_in(options, ctx);
+  } catch (const std::bad_alloc& e) {
+    // An allocation failure anywhere: a message and a final run.json, never an abort.
+    const std::string message = engine_message(e.what());
+    std::cerr << "sedem: " << message << '\n';
+    if (ctx.record_started) {
+      ctx.record.status = "failed";
+      if (ctx.record.message.empty()) ctx.record.message = message;
+      try {
+        write_run_record(ctx.record, ctx.scene, ctx.out / "run.json");
+      } catch (const std::exception&) {
+      }
+      remove_temporary_files(ctx.out);
+    }
+    return exit_code::engine_failure;
+  }
 }
 
 }  // namespace sedem::app

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "app/atomic_write.h"
 #include "core/scene/scene_loader.h"
 
 namespace sedem::app {
@@ -57,17 +58,10 @@ void write_run_record(const RunRecord& r, Scene& scene, const std::filesystem::p
   j["simulated_time_s"] = r.simulated_time;
   j["wall_time_s"] = r.wall_time;
   j["particle_steps_per_s"] = r.wall_time > 0 ? r.particle_steps / r.wall_time : 0.0;
+  j["legs"] = r.legs;
   j["peak_memory_bytes"] = peak_memory_bytes();
   j["results"] = r.results;
-  auto tmp = file;
-  tmp += ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << j.dump(2) << '\n';
-    out.flush();
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  std::filesystem::rename(tmp, file);
+  write_atomically(file, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
 }
 
 }  // namespace sedem::app

@@ -22,6 +22,7 @@ struct RunRecord {
   double simulated_time = 0;
   double wall_time = 0;
   double particle_steps = 0;
+  std::int64_t legs = 1;  // the first run and each --resume that went on with it
   nlohmann::json results = nlohmann::json::object();  // each test's error and bias
 };
 

@@ -1,8 +1,10 @@
 #include "app/test_outputs.h"
 
+#include <cmath>
 #include <fstream>
 #include <stdexcept>
 
+#include "app/atomic_write.h"
 #include "app/figure_inputs.h"
 #include "core/instruments/readings_csv.h"
 #include "render/hydrometer_writer.h"
@@ -12,26 +14,29 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Writes through a temporary file renamed into place: a reader never sees half a file.
-template <class Write>
-void write_atomically(const fs::path& file, Write&& write) {
-  auto tmp = file;
-  tmp += ".tmp";
-  {
-    std::ofstream out(tmp);
-    write(out);
-    out.flush();
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, file);
+// A figure that cannot be computed (a reading that is no number) is null, with a note: never
+// NaN counted as perfect, never "inf" in run.json.
+nlohmann::json figure(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
 }
 
 }  // namespace
 
 nlohmann::json results_json(const TestResults& results) {
   nlohmann::json j = nlohmann::json::object();
-  for (const auto& t : results.granulometry.tests)
-    j[t.test] = {{"error_pp", t.error}, {"bias_pp", t.bias}, {"readings", t.dem.rows.size()}};
+  for (const auto& t : results.granulometry.tests) {
+    nlohmann::json r = {{"error_pp", figure(t.error)},
+                        {"bias_pp", figure(t.bias)},
+                        {"readings", t.dem.rows.size()}};
+    if (!std::isfinite(t.error) || !std::isfinite(t.bias))
+      r["note"] = "cannot be computed: a reading of the test or of its reference is not a number";
+    if (t.test == "hydrometer") {
+      std::size_t off = 0;
+      for (const auto& h : results.hydrometer) off += h.on_scale ? 0 : 1;
+      r["off_scale_readings"] = off;
+    }
+    j[t.test] = r;
+  }
   return j;
 }
 

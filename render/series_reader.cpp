@@ -1,43 +1,94 @@
 #include "render/series_reader.h"
 
-#include <fstream>
-#include <regex>
-#include <sstream>
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
+#include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLDataParser.h>
 #include <vtkXMLPolyDataReader.h>
 
 namespace sedem::render {
 
+namespace {
+
+// Collects the errors a VTK reader or parser reports (VTK's own printing is off).
+class ErrorCatcher : public vtkCommand {
+ public:
+  static ErrorCatcher* New() { return new ErrorCatcher; }
+  void Execute(vtkObject*, unsigned long, void* data) override {
+    if (message.empty() && data) message = static_cast<const char*>(data);
+    failed = true;
+  }
+  bool failed = false;
+  std::string message;
+};
+
+[[noreturn]] void damaged(const std::filesystem::path& file, const std::string& why) {
+  throw SeriesError(file.string() + ": damaged or not a sedem file: " + why);
+}
+
+}  // namespace
+
 std::vector<std::pair<double, std::string>> read_pvd(const std::filesystem::path& pvd) {
-  std::ifstream in(pvd);
-  if (!in) throw std::runtime_error("cannot read " + pvd.string());
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(pvd, ec)) throw SeriesError("cannot read " + pvd.string());
+  // VTK's XML parser (expat): a file cut short or otherwise not well-formed is refused, not
+  // read as far as it goes.
+  auto parser = vtkSmartPointer<vtkXMLDataParser>::New();
+  auto errors = vtkSmartPointer<ErrorCatcher>::New();
+  parser->AddObserver(vtkCommand::ErrorEvent, errors);
+  parser->SetFileName(pvd.c_str());
+  if (!parser->Parse() || errors->failed) damaged(pvd, "not well-formed XML");
+  vtkXMLDataElement* root = parser->GetRootElement();
+  if (!root || std::string(root->GetName()) != "VTKFile" || !root->GetAttribute("type") ||
+      std::string(root->GetAttribute("type")) != "Collection")
+    damaged(pvd, "not a ParaView collection (VTKFile type=\"Collection\")");
+  vtkXMLDataElement* collection = root->FindNestedElementWithName("Collection");
+  if (!collection) damaged(pvd, "no Collection element");
   std::vector<std::pair<double, std::string>> entries;
-  const std::regex dataset(R"re(<DataSet\s+timestep="([^"]+)"[^>]*\sfile="([^"]+)"\s*/>)re");
-  for (auto it = std::sregex_iterator(s.begin(), s.end(), dataset); it != std::sregex_iterator();
-       ++it)
-    entries.emplace_back(std::stod((*it)[1].str()), (*it)[2].str());
+  for (int i = 0; i < collection->GetNumberOfNestedElements(); ++i) {
+    vtkXMLDataElement* e = collection->GetNestedElement(i);
+    if (std::string(e->GetName()) != "DataSet") continue;
+    double time = 0;
+    const char* file = e->GetAttribute("file");
+    if (!e->GetScalarAttribute("timestep", time) || !std::isfinite(time))
+      damaged(pvd, "entry " + std::to_string(i + 1) + " has no valid timestep");
+    if (!file || !*file) damaged(pvd, "entry " + std::to_string(i + 1) + " names no file");
+    const std::filesystem::path relative(file);
+    if (relative.is_absolute() || std::any_of(relative.begin(), relative.end(),
+                                              [](const auto& part) { return part == ".."; }))
+      damaged(pvd, "entry " + std::to_string(i + 1) + " names a file outside its folder");
+    if (!entries.empty() && time < entries.back().first)
+      damaged(pvd, "its times go backwards at entry " + std::to_string(i + 1));
+    entries.emplace_back(time, file);
+  }
   return entries;
 }
 
 Snapshot read_particles_vtp(const std::filesystem::path& file) {
-  if (!std::filesystem::exists(file)) throw std::runtime_error("no such file: " + file.string());
+  if (!std::filesystem::is_regular_file(file)) throw SeriesError("no such file: " + file.string());
   auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+  auto errors = vtkSmartPointer<ErrorCatcher>::New();
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  if (!reader->CanReadFile(file.c_str())) damaged(file, "not a VTK XML PolyData file");
   reader->SetFileName(file.c_str());
   reader->Update();
+  if (errors->failed) damaged(file, errors->message.empty() ? "unreadable" : errors->message);
   vtkPolyData* poly = reader->GetOutput();
   auto* pd = poly->GetPointData();
+  const vtkIdType points = poly->GetNumberOfPoints();
   auto array = [&](const char* name) {
     vtkDataArray* a = pd->GetArray(name);
-    if (!a) throw std::runtime_error(file.string() + ": no point array '" + name + "'");
+    if (!a) throw SeriesError(file.string() + ": no point array '" + name + "'");
+    if (a->GetNumberOfTuples() != points)
+      damaged(file, std::string("point array '") + name + "' is cut short");
     return a;
   };
   vtkDataArray* diameter = array("diameter");
@@ -46,7 +97,8 @@ Snapshot read_particles_vtp(const std::filesystem::path& file) {
   vtkDataArray* size_class = array("size_class");
   vtkDataArray* id = array("id");
   vtkDataArray* time = poly->GetFieldData()->GetArray("TimeValue");
-  if (!time) throw std::runtime_error(file.string() + ": no field data 'TimeValue'");
+  if (!time || time->GetNumberOfTuples() < 1)
+    throw SeriesError(file.string() + ": no field data 'TimeValue'");
 
   Snapshot s;
   s.time = time->GetTuple1(0);

@@ -437,7 +437,44 @@ void Engine::load_checkpoint(const std::string& path) {
     search_.resize(members);
     x0_.resize(members);
     y0_.resize(members);
+  } else if (!local_ && members != sample_.particles.size()) {
+    throw std::runtime_error("checkpoint does not match this sample: " + path);
   }
+  // Every value read back is checked before it is used: a damaged file is refused with the
+  // field it got wrong, never a crash or a silently shorter run.
+  auto validate_loaded_state = [&](std::uint64_t springs) {
+    auto bad = [&](const std::string& what) {
+      throw std::runtime_error("damaged checkpoint " + path + ": " + what);
+    };
+    if (!in) bad("truncated");
+    if (!std::isfinite(time_) || time_ < 0 || time_ > scene_.end_time * (1 + 1e-9))
+      bad("time " + std::to_string(time_) + " s is outside the run (0 to " +
+          std::to_string(scene_.end_time) + " s)");
+    if (stats_.steps < 0 || !std::isfinite(stats_.particle_steps) || stats_.particle_steps < 0)
+      bad("negative step counts");
+    // Sample indices: all of them, or with local steps those of the members.
+    const std::size_t n = state_.size(), ids = sample_.particles.size();
+    std::vector<std::uint8_t> seen(ids, 0);
+    for (std::uint32_t o : state_.origin) {
+      if (o >= ids || seen[o]) bad("particle order entry " + std::to_string(o) + " is no particle");
+      seen[o] = 1;
+    }
+    for (const auto* v : {&state_.x, &state_.y, &state_.vx, &state_.vy, &state_.omega,
+                          &state_.diameter, &state_.weight, &search_, &x0_, &y0_})
+      for (double x : *v)
+        if (!std::isfinite(x)) bad("a particle's position, velocity or size is no number");
+    for (std::size_t i = 0; i < n; ++i)
+      if (!(state_.diameter[i] > 0) || !(state_.weight[i] >= 0) || state_.frozen[i] > 1)
+        bad("particle " + std::to_string(i) + " has a bad size, weight or frozen flag");
+    if (resorted_at_ < 0 || resorted_at_ > stats_.steps) bad("resort step out of range");
+    // The springs follow: no more of them than the file holds.
+    const auto here = in.tellg();
+    in.seekg(0, std::ios::end);
+    const auto end = in.tellg();
+    in.seekg(here);
+    if (here < 0 || end < here || springs > std::uint64_t(end - here) / sizeof(PairHistory::Entry))
+      bad(std::to_string(springs) + " contacts announced, more than the file holds");
+  };
   read_value(in, time_);
   read_value(in, stats_);
   facts_ = PassFacts{};
@@ -454,13 +491,21 @@ void Engine::load_checkpoint(const std::string& path) {
   read_value(in, resorted_at_);
   std::uint64_t count = 0;
   read_value(in, count);
+  validate_loaded_state(count);
   std::vector<PairHistory::Entry> springs(count);
   in.read(reinterpret_cast<char*>(springs.data()),
           std::streamsize(count * sizeof(PairHistory::Entry)));
   springs_.assign(&springs, 1);
+  const std::uint64_t n = sample_.particles.size();
+  for (const auto& e : springs)
+    if (e.key != PairHistory::kEmpty &&
+        ((e.key >> 32) >= n || (e.key & 0xffffffffu) >= n || !std::isfinite(e.spring)))
+      throw std::runtime_error("damaged checkpoint " + path + ": a contact names no particle");
   integrator_->load(in);
   if (local_) load_local(in);
   if (!in) throw std::runtime_error("truncated checkpoint " + path);
+  if (in.peek() != std::char_traits<char>::eof())
+    throw std::runtime_error("damaged checkpoint " + path + ": data after its end");
   // The lists as they were: built from the saved build positions, in the saved order.
   if (!lists_stale_) {
     grid_.build(state_.size(), x0_.data(), y0_.data(), search_.data());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace sedem {
@@ -15,13 +16,15 @@ TestReadings to_readings(const std::vector<HydrometerReading>& readings) {
                      "standard_effective_depth_m",
                      "density_eq19_kg_m3",
                      "bulb_mean_density_kg_m3",
-                     "percent_finer_bulb_density"};
+                     "percent_finer_bulb_density",
+                     "on_scale"};
   for (const auto& r : readings)
-    t.rows.push_back({r.time,
-                      r.diameter,
-                      r.percent_finer,
-                      {r.reading, r.tip_depth, r.centre_depth, r.standard_effective_depth,
-                       r.density_eq19, r.bulb_mean_density, r.percent_finer_bulb_density}});
+    t.rows.push_back(
+        {r.time,
+         r.diameter,
+         r.percent_finer,
+         {r.reading, r.tip_depth, r.centre_depth, r.standard_effective_depth, r.density_eq19,
+          r.bulb_mean_density, r.percent_finer_bulb_density, r.on_scale ? 1.0 : 0.0}});
   return t;
 }
 
@@ -83,15 +86,22 @@ double curve_error(const TestReadings& dem, const TestReadings& reference) {
       throw std::invalid_argument("curve_error: " + dem.test + " reading " + std::to_string(k) +
                                   " at " + std::to_string(t0) + " s, reference at " +
                                   std::to_string(t1) + " s");
-    worst = std::max(worst, std::abs(dem.rows[k].percent_finer - reference.rows[k].percent_finer));
+    const double d = std::abs(dem.rows[k].percent_finer - reference.rows[k].percent_finer);
+    // A reading that is no number makes the error unknown, not zero (std::max drops NaN).
+    if (!std::isfinite(d)) return std::numeric_limits<double>::quiet_NaN();
+    worst = std::max(worst, d);
   }
   return worst;
 }
 
 double curve_bias(const TestReadings& reference, const std::vector<SizeClass>& classes) {
   double worst = 0;
-  for (const auto& r : reference.rows)
-    worst = std::max(worst, std::abs(r.percent_finer - true_percent_finer(classes, r.diameter)));
+  for (const auto& r : reference.rows) {
+    const double d = std::abs(r.percent_finer - true_percent_finer(classes, r.diameter));
+    if (!std::isfinite(d) || !std::isfinite(r.diameter))
+      return std::numeric_limits<double>::quiet_NaN();
+    worst = std::max(worst, d);
+  }
   return worst;
 }
 

@@ -1,6 +1,7 @@
 #include "core/instruments/readings_csv.h"
 
 #include <charconv>
+#include <cmath>
 #include <string>
 
 namespace sedem {
@@ -8,7 +9,10 @@ namespace sedem {
 namespace {
 
 // The shortest text that reads back as the same double.
+// A value that is no finite number (a reading that cannot be computed) is left empty: no
+// "nan" or "inf" reaches a file.
 std::string num(double v) {
+  if (!std::isfinite(v)) return {};
   char buffer[32];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
   return std::string(buffer, result.ptr);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "core/lab/water.h"
 
@@ -36,6 +37,22 @@ double percent_finer(const LabReading& r, const LabSpecimen& s) {
          dry_mass_g * 100.0;
 }
 
+// A result that is no number, or a share finer far above the whole specimen, comes from
+// inputs that cannot be right: refused, naming the row, rather than written.
+void check_point(std::size_t row, const LabPoint& p, const LabSpecimen& s) {
+  for (const auto& [name, v] : {std::pair<const char*, double>{"diameter_m", p.diameter},
+                                {"percent_finer", p.percent_finer},
+                                {"effective_depth_m", p.effective_depth}})
+    if (!std::isfinite(v))
+      throw InvalidLabReading(row, name, v, "the reduction gives no finite number; check the row");
+  if (p.percent_finer > kMaxPercentFiner) {
+    std::ostringstream why;
+    why << "more than " << kMaxPercentFiner << " % of the specimen cannot be finer; the dry mass ("
+        << s.dry_mass * 1e3 << " g) is too small for this reading: check --mass-g";
+    throw InvalidLabReading(row, "percent_finer", p.percent_finer, why.str());
+  }
+}
+
 }  // namespace
 
 InvalidLabReading::InvalidLabReading(std::size_t row, std::string field, double value,
@@ -65,9 +82,10 @@ void validate_lab_readings(const std::vector<LabReading>& readings, const LabSpe
     if (!(r.temperature >= 0 && r.temperature <= 40))
       throw InvalidLabReading(i, "temperature_c", r.temperature,
                               "outside 0-40 C, where the water density formula holds");
-    if (!std::isfinite(r.composite_correction))
+    if (!(std::abs(r.composite_correction) <= kMaxCompositeCorrection))
       throw InvalidLabReading(i, "composite_correction_g_per_l", r.composite_correction,
-                              "must be a finite number");
+                              "must be a number between -65 and 65 g/L (a correction wider than "
+                              "the whole 152H scale is no correction)");
   }
 }
 
@@ -89,6 +107,7 @@ std::vector<LabPoint> reduce_astm_d422(const std::vector<LabReading>& readings,
     p.effective_depth = depth_cm * 1e-2;
     p.corrected_reading = r.reading - r.composite_correction;
     p.percent_finer = percent_finer(r, s);
+    check_point(out.size(), p, s);
     out.push_back(p);
   }
   return out;
@@ -110,6 +129,7 @@ std::vector<LabPoint> reduce_astm_d7928(const std::vector<LabReading>& readings,
         std::sqrt(18.0 * p.viscosity * p.effective_depth / ((rho_solids - rho_w) * g * r.time));
     p.corrected_reading = r.reading - r.composite_correction;
     p.percent_finer = percent_finer(r, s);
+    check_point(out.size(), p, s);
     out.push_back(p);
   }
   return out;

@@ -15,6 +15,12 @@ struct LabReading {
   double composite_correction = 0;  // g/L: zero, meniscus, dispersant and temperature
 };
 
+// The widest composite correction accepted, g/L (the 152H's scale spans 65 g/L), and the
+// largest percent finer a reduction may give (a little above 100 % is reading scatter; far
+// above, a dry mass that does not belong to the readings).
+inline constexpr double kMaxCompositeCorrection = 65;
+inline constexpr double kMaxPercentFiner = 110;
+
 // The specimen the readings belong to.
 struct LabSpecimen {
   double specific_gravity = 2.65;  // Gs of the soil solids (at 20 C)

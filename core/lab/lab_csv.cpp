@@ -12,16 +12,41 @@ namespace sedem {
 
 namespace {
 
+std::string trimmed(const std::string& cell) {
+  const auto first = cell.find_first_not_of(" \t\r");
+  const auto last = cell.find_last_not_of(" \t\r");
+  return first == std::string::npos ? "" : cell.substr(first, last - first + 1);
+}
+
+// One CSV line into cells: a cell may be quoted ("time_min", as spreadsheets write headers),
+// with "" for a quote inside; spaces around a cell are dropped.
 std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> cells;
   std::string cell;
-  std::istringstream s(line);
-  while (std::getline(s, cell, ',')) {
-    const auto first = cell.find_first_not_of(" \t\r");
-    const auto last = cell.find_last_not_of(" \t\r");
-    cells.push_back(first == std::string::npos ? "" : cell.substr(first, last - first + 1));
+  bool quoted = false, was_quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        cell += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        cell += c;
+      }
+    } else if (c == '"' && trimmed(cell).empty()) {
+      quoted = was_quoted = true;
+      cell.clear();
+    } else if (c == ',') {
+      cells.push_back(was_quoted ? cell : trimmed(cell));
+      cell.clear();
+      was_quoted = false;
+    } else if (!(was_quoted && (c == ' ' || c == '\t' || c == '\r'))) {
+      cell += c;
+    }
   }
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  cells.push_back(was_quoted ? cell : trimmed(cell));
   return cells;
 }
 
@@ -46,6 +71,8 @@ std::vector<std::vector<double>> read_numeric_csv(std::istream& in,
   std::vector<std::string> header;
   while (header.empty() && std::getline(in, line)) {
     ++number;
+    // A spreadsheet's "CSV UTF-8" starts with a byte order mark.
+    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
     if (!blank(line)) header = split(line);
   }
   if (header.empty()) throw LabCsvError(number, "", "no header");

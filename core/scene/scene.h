@@ -35,6 +35,9 @@ struct Scene {
   InstrumentsConfig instruments;
   OutputConfig output;
   double end_time = 60.0;  // s of simulated time
+  // s of wall time between the checkpoints written while the run goes on (0: none), so that a
+  // kill or a power cut loses at most this much work.
+  double checkpoint_interval = 180.0;
 
   // The table of every key, bound to this scene's fields. The Scene must outlive it and
   // must not move while it is in use.

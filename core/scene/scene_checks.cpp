@@ -4,6 +4,9 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/instruments/buoyancy_sphere.h"
+#include "core/instruments/hydrometer.h"
+#include "core/instruments/pipette.h"
 #include "core/sample/grading_curve.h"
 #include "core/sample/placement.h"
 #include "core/sample/sample_builder.h"
@@ -82,6 +85,81 @@ void check_family(const GradingConfig& g, const Checker& check) {
                    "the range or widen the spread");
 }
 
+// Each enabled instrument must fit in the column and work in the scene's liquid: the checks
+// the instruments would otherwise make at their first reading, made before anything runs.
+void check_instruments(const Scene& scene, const Checker& check) {
+  const auto& in = scene.instruments;
+  const Cylinder& c = scene.cylinder;
+  const bool any = in.hydrometer || in.buoyancy || in.pipette;
+  if (any && scene.forces.drag == "off")
+    check.fail("forces.drag",
+               "gives no terminal velocity, which the instruments' reference solution needs; "
+               "choose di_felice or stokes, or disable the instruments");
+  if (in.buoyancy) {
+    const double r = 0.5 * in.sphere_diameter, depth = in.buoyancy_depth_fraction * c.height;
+    if (2 * r > c.height || 2 * r > c.diameter)
+      check.fail(2 * r > c.height ? "cylinder.height_m" : "cylinder.diameter_m",
+                 "is too small for the buoyancy sphere (instruments.buoyancy.sphere_diameter_cm "
+                 "= " +
+                     check.value("instruments.buoyancy.sphere_diameter_cm") +
+                     "); make the column larger or set instruments.buoyancy.enabled = false");
+    if (depth - r < 0 || depth + r > c.height)
+      check.fail("instruments.buoyancy.depth_fraction",
+                 "puts the sphere (" + number(2 * r * 100) +
+                     " cm) partly outside the liquid; allowed for this column: " +
+                     number(r / c.height) + " to " + number(1 - r / c.height));
+  }
+  if (in.pipette) {
+    Pipette p;
+    p.volume = in.pipette_volume;
+    p.depth = in.pipette_depth_fraction * c.height;
+    const double r = p.radius(c);
+    if (r > c.half_width() || 2 * r > c.height)
+      check.fail("instruments.pipette.volume_ml",
+                 "needs a sampling circle of radius " + number(r * 100) +
+                     " cm, which does not fit in the section (" + number(c.diameter * 100) +
+                     " cm x " + number(c.height * 100) + " cm)");
+    if (p.depth - r < 0 || p.depth + r > c.height)
+      check.fail("instruments.pipette.depth_fraction",
+                 "puts the sampling circle (radius " + number(r * 100) +
+                     " cm) partly outside the liquid; allowed for this column: " +
+                     number(r / c.height) + " to " + number(1 - r / c.height));
+  }
+  if (in.hydrometer) {
+    HydrometerDesign design;
+    design.tip_length = in.hydrometer_tip_length;
+    design.shoulder_length = in.hydrometer_shoulder_length;
+    if (design.tip_length + design.shoulder_length > design.bulb_length)
+      check.fail("instruments.hydrometer.tip_length_cm",
+                 "with instruments.hydrometer.shoulder_length_cm = " +
+                     check.value("instruments.hydrometer.shoulder_length_cm") +
+                     " is longer than the 14 cm bulb");
+    const HydrometerGeometry h = make_hydrometer(design);
+    const double lightest = h.mass / h.volume_below(h.length());
+    if (!(scene.fluid.density > lightest))
+      check.fail("fluid.density",
+                 "is too light for the 152H hydrometer, which sinks in it (it "
+                 "floats in liquids denser than " +
+                     number(lightest) + " kg/m^3)");
+    const double tip = tip_depth_in_uniform(h, scene.fluid.density);
+    const double bulb_top = tip - h.bulb_length;
+    const double reading = h.reading_at(bulb_top);
+    if (bulb_top < 0 || reading < h.scale_min || reading > h.scale_max)
+      check.fail("fluid.density",
+                 "puts the 152H hydrometer off its scale before any soil is added: it would read "
+                 "R = " +
+                     number(reading) + " g/L in the clear liquid (scale " + number(h.scale_min) +
+                     " to " + number(h.scale_max) + ")" +
+                     (bulb_top < 0 ? ", with the top of its bulb " + number(-bulb_top * 100) +
+                                         " cm above the surface"
+                                   : std::string()));
+    if (tip >= c.height)
+      check.fail("cylinder.height_m", "is shorter than the depth the 152H hydrometer floats at (" +
+                                          number(tip * 100) +
+                                          " cm in the clear liquid): it would touch the bottom");
+  }
+}
+
 }  // namespace
 
 void check_scene(const Scene& scene, const SceneOrigins& origins) {
@@ -91,6 +169,15 @@ void check_scene(const Scene& scene, const SceneOrigins& origins) {
     check.fail("sample.particle_density",
                "must exceed fluid.density = " + check.value("fluid.density") +
                    " kg/m^3, or nothing settles");
+
+  if (!(scene.fluid.gravity > 0))
+    check.fail("fluid.gravity",
+               "leaves the grains floating: nothing settles and no test can be "
+               "read; give a positive value (9.81 on Earth)");
+  if (scene.name.size() > kMaxNameLength)
+    throw SceneError(origins.of("name") + ": name is " + std::to_string(scene.name.size()) +
+                     " characters long; at most " + std::to_string(kMaxNameLength) +
+                     " are allowed");
 
   const auto& g = s.grading;
   if (g.family == "table")
@@ -138,6 +225,8 @@ void check_scene(const Scene& scene, const SceneOrigins& origins) {
                               " > limit " + number(s.placement.max_area_fraction) +
                               " (sample.placement.max_area_fraction); lower it");
   }
+
+  check_instruments(scene, check);
 }
 
 }  // namespace sedem

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <string>
 
@@ -15,6 +16,9 @@ struct SceneOrigins {
 
   std::string of(const std::string& key) const;
 };
+
+// The longest scene name accepted (it titles figures and frames).
+inline constexpr std::size_t kMaxNameLength = 200;
 
 // Checks that need more than one key (each key's own range is checked as it is read): the
 // grading curve as a whole, the particle count, whether the particles fit in the section.

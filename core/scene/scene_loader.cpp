@@ -185,11 +185,29 @@ Scene parse_scene(std::string_view text, const std::string& source_name,
 }
 
 Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(file, ec);
+  if (ec || !std::filesystem::exists(status))
+    throw SceneError(file.string() + ": cannot open the scene file: no such file");
+  // A folder, a device (/dev/zero) or a pipe is no scene; a scene is a small text file.
+  if (!std::filesystem::is_regular_file(status))
+    throw SceneError(file.string() +
+                     ": not a scene file (a folder or a device, not a regular "
+                     "file)");
+  const auto size = std::filesystem::file_size(file, ec);
+  if (ec || size > kMaxSceneFileBytes)
+    throw SceneError(file.string() + ": the scene file is " + std::to_string(size) +
+                     " bytes long; a scene is at most " + std::to_string(kMaxSceneFileBytes) +
+                     " bytes");
   std::ifstream in(file);
   if (!in) throw SceneError(file.string() + ": cannot open the scene file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  Scene scene = parse_scene(buffer.str(), file.string(), overrides);
+  std::string text(kMaxSceneFileBytes + 1, '\0');
+  in.read(text.data(), std::streamsize(text.size()));
+  text.resize(std::size_t(in.gcount()));
+  if (text.size() > kMaxSceneFileBytes)
+    throw SceneError(file.string() + ": the scene file is longer than " +
+                     std::to_string(kMaxSceneFileBytes) + " bytes");
+  Scene scene = parse_scene(text, file.string(), overrides);
   return scene;
 }
 

@@ -16,6 +16,9 @@ struct SceneError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The largest scene file read (a scene is a few kilobytes of text).
+inline constexpr std::size_t kMaxSceneFileBytes = 1 << 20;
+
 // Reads a TOML scene, then applies `overrides` ("key=value", as given to --set), then checks
 // the values against each other. Throws SceneError.
 Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});

@@ -325,7 +325,13 @@ TEST(Cli, AFullDiskStopsTheRunWithAClearMessage) {
   EXPECT_EQ(r.status, 4) << r.output;
   EXPECT_NE(r.output.find("writing the outputs failed: cannot write"), std::string::npos)
       << r.output;
-  EXPECT_EQ(read_json(out / "run.json")["status"], "failed");
+  // The first cause is kept (a later failure is its consequence) and no temporary file stays.
+  const auto record = read_json(out / "run.json");
+  EXPECT_EQ(record["status"], "failed");
+  EXPECT_EQ(record["message"].get<std::string>().rfind("writing the outputs failed", 0), 0u)
+      << record["message"];
+  for (const auto& e : fs::recursive_directory_iterator(out))
+    EXPECT_NE(e.path().extension(), ".tmp") << e.path();
 }
 
 }  // namespace

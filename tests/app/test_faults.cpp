@@ -1,0 +1,376 @@
+// Bad input, faults and kills: each ends in a clear error (exit 2 naming the key or file, 3
+// before simulating, ...) or in a correct result, never in a silent wrong one.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <random>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
+#include "core/instruments/granulometry.h"
+#include "core/instruments/readings_csv.h"
+
+namespace sedem {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kOut = fs::path(SEDEM_TEST_OUTPUT) / "faults";
+const std::string kScenes = std::string(SEDEM_SOURCE_DIR) + "/scenes/";
+const std::string kDemo = kScenes + "demo.toml";
+// A short run, no frames: what is checked is the outcome, not the physics.
+const std::string kShort = " --set run.end_time_s=2 --set output.frames=false --quiet";
+
+fs::path fresh(const std::string& name) {
+  const fs::path dir = kOut / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir.parent_path());
+  return dir;
+}
+
+std::string text_of(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void write_text(const fs::path& file, const std::string& text) {
+  std::ofstream out(file, std::ios::binary);
+  out << text;
+}
+
+nlohmann::json read_json(const fs::path& file) {
+  std::ifstream in(file);
+  return nlohmann::json::parse(in);
+}
+
+// Exit 2 with every one of `words` in the message.
+void expect_refused(const test::CommandResult& r, std::initializer_list<const char*> words) {
+  EXPECT_EQ(r.status, 2) << r.output;
+  for (const char* w : words)
+    EXPECT_NE(r.output.find(w), std::string::npos) << w << "\n" << r.output;
+}
+
+// A run of the demo that is killed (SIGKILL) once it has written a checkpoint.
+const std::string kSlow =
+    " --set run.end_time_s=60 --set output.frames=false --quiet"
+    " --set integrator.crossing_fraction=0.1 --set run.checkpoint_interval_s=0.3";
+
+void run_and_kill_after_checkpoint(const fs::path& dir, const std::string& extra = "") {
+  auto r = test::run_sedem("run " + kDemo + kSlow + extra + " --out " + dir.string() +
+                           " & pid=$!; for i in $(seq 400); do [ -f " + dir.string() +
+                           "/checkpoint.json ] && break; sleep 0.05; done; kill -KILL $pid; "
+                           "wait $pid");
+  ASSERT_EQ(r.status, 137) << "the run ended before it was killed: " << r.output;
+  ASSERT_TRUE(fs::exists(dir / "checkpoint.bin"));
+}
+
+// 64-bit FNV-1a, as checkpoint.json records checkpoint.bin's bytes.
+std::string fnv(const std::string& bytes) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
+  char out[17];
+  std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(h));
+  return out;
+}
+
+// Writes a damaged checkpoint.bin with a record that vouches for it: only the engine's own
+// checks of the values stand between it and the run.
+void forge_checkpoint(const fs::path& dir, const std::string& bytes) {
+  write_text(dir / "checkpoint.bin", bytes);
+  auto record = read_json(dir / "checkpoint.json");
+  record["current"]["content"] = fnv(bytes);
+  record.erase("previous");
+  write_text(dir / "checkpoint.json", record.dump());
+}
+
+// 1. No NaN or inf reaches a CSV or run.json; an error that cannot be computed is no error.
+TEST(Faults, NoGravityIsRefusedAndNanIsNeverCountedAsPerfect) {
+  const fs::path out = fresh("gravity");
+  expect_refused(
+      test::run_sedem("run " + kDemo + kShort + " --set fluid.gravity=0 --out " + out.string()),
+      {"fluid.gravity = 0", "nothing settles"});
+
+  TestReadings dem{"hydrometer", {}, {}}, ref{"hydrometer", {}, {}};
+  dem.rows.push_back({60, std::numeric_limits<double>::infinity(), std::nan(""), {}});
+  ref.rows.push_back({60, 1e-5, 50, {}});
+  EXPECT_TRUE(std::isnan(curve_error(dem, ref)));
+  std::ostringstream csv;
+  write_readings_csv(csv, dem);
+  EXPECT_EQ(csv.str().find("nan"), std::string::npos) << csv.str();
+  EXPECT_EQ(csv.str().find("inf"), std::string::npos) << csv.str();
+}
+
+// 2. A hydrometer off its scale, or that does not float, is refused; readings off the scale
+// during a run are flagged.
+TEST(Faults, AHydrometerOffItsScaleIsRefusedOrFlagged) {
+  const fs::path out = fresh("off_scale");
+  expect_refused(
+      test::run_sedem("run " + kDemo + kShort + " --set fluid.density=1100 --out " + out.string()),
+      {"fluid.density = 1100", "off its scale"});
+  expect_refused(
+      test::run_sedem("run " + kDemo + kShort + " --set fluid.density=950 --out " + out.string()),
+      {"fluid.density = 950", "sinks"});
+  auto r = test::run_sedem("run " + kDemo + kShort +
+                           " --set instruments.hydrometer.times_min=[0.02] --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(text_of(out / "readings_hydrometer.csv").find(",on_scale\n"), std::string::npos);
+  EXPECT_TRUE(read_json(out / "run.json")["results"]["hydrometer"].contains("off_scale_readings"));
+}
+
+// 3. A checkpoint proves which run it belongs to.
+TEST(Faults, ACheckpointOfAnotherRunIsRefused) {
+  const fs::path dir = fresh("identity");
+  run_and_kill_after_checkpoint(dir);
+  // run.json edited to another seed: the checkpoint is not that run's.
+  const std::string original = text_of(dir / "run.json");
+  auto record = read_json(dir / "run.json");
+  record["scene"]["sample.seed"] = 8;
+  write_text(dir / "run.json", record.dump(2));
+  expect_refused(test::run_sedem("run --resume " + dir.string()), {"another run"});
+  write_text(dir / "run.json", original);
+
+  // Another run into the folder, killed before its first checkpoint: the old checkpoint is
+  // gone with the old run, nothing is mixed.
+  auto other = test::run_sedem(
+      "run " + kDemo + kSlow + " --set sample.seed=2 --set run.checkpoint_interval_s=0 --out " +
+      dir.string() + " & pid=$!; for i in $(seq 400); do grep -qs '\"sample.seed\": 2' " +
+      dir.string() + "/run.json && break; sleep 0.05; done; kill -KILL $pid; wait $pid");
+  ASSERT_EQ(other.status, 137) << other.output;
+  expect_refused(test::run_sedem("run --resume " + dir.string()), {"no checkpoint.bin"});
+}
+
+// 4. Every value read back from a checkpoint is checked.
+TEST(Faults, ADamagedCheckpointIsRefusedFieldByField) {
+  const fs::path dir = fresh("damaged_checkpoint");
+  run_and_kill_after_checkpoint(dir);
+  const std::string good = text_of(dir / "checkpoint.bin");
+  const std::string good_record = text_of(dir / "checkpoint.json");
+
+  // A byte changed, the record left as it was: the bytes do not match.
+  std::string flipped = good;
+  flipped[flipped.size() / 2] ^= 0x40;
+  write_text(dir / "checkpoint.bin", flipped);
+  expect_refused(test::run_sedem("run --resume " + dir.string()), {"does not match"});
+
+  // The time (right after the 8-byte magic): NaN, negative, past the end.
+  for (double t : {std::nan(""), -1.0, 1e9}) {
+    write_text(dir / "checkpoint.json", good_record);
+    std::string bytes = good;
+    std::memcpy(bytes.data() + 8, &t, sizeof t);
+    forge_checkpoint(dir, bytes);
+    expect_refused(test::run_sedem("run --resume " + dir.string()), {"damaged checkpoint", "time"});
+  }
+
+  // One entry of the particle order (a length, then a permutation of 0..n-1 as uint32).
+  const auto n = read_json(dir / "run.json")["particle_count"].get<std::uint64_t>();
+  std::size_t at = std::string::npos;
+  for (std::size_t i = 0; i + 8 + 4 * n <= good.size() && at == std::string::npos; ++i) {
+    std::uint64_t len;
+    std::memcpy(&len, good.data() + i, 8);
+    if (len != n) continue;
+    std::vector<std::uint8_t> seen(n, 0);
+    bool permutation = true;
+    for (std::size_t k = 0; k < n && permutation; ++k) {
+      std::uint32_t v;
+      std::memcpy(&v, good.data() + i + 8 + 4 * k, 4);
+      permutation = v < n && !seen[v];
+      if (permutation) seen[v] = 1;
+    }
+    if (permutation) at = i + 8;
+  }
+  ASSERT_NE(at, std::string::npos) << "no particle order found in the checkpoint";
+  std::string bytes = good;
+  const std::uint32_t huge = 2147483647u;
+  std::memcpy(bytes.data() + at, &huge, 4);
+  write_text(dir / "checkpoint.json", good_record);
+  forge_checkpoint(dir, bytes);
+  expect_refused(test::run_sedem("run --resume " + dir.string()), {"damaged checkpoint"});
+
+  // Cut short.
+  write_text(dir / "checkpoint.json", good_record);
+  forge_checkpoint(dir, good.substr(0, good.size() / 3));
+  expect_refused(test::run_sedem("run --resume " + dir.string()), {"checkpoint"});
+}
+
+// 5 and 13. A damaged or missing .pvd or .vtp is refused by `render` and `--resume`, naming
+// the file, and nothing is rewritten from it.
+TEST(Faults, ADamagedSeriesIsRefusedNamingTheFile) {
+  const fs::path dir = fresh("damaged_series");
+  ASSERT_EQ(test::run_sedem("run " + kDemo + " --set run.end_time_s=20" +
+                            " --set output.frames=false --quiet --out " + dir.string())
+                .status,
+            0);
+  const std::string pvd = text_of(dir / "particles.pvd");
+  const std::string readings = text_of(dir / "readings_buoyancy.csv");
+  write_text(dir / "particles.pvd", pvd.substr(0, 300));
+  expect_refused(test::run_sedem("render " + dir.string()), {"particles.pvd"});
+  EXPECT_EQ(text_of(dir / "readings_buoyancy.csv"), readings);
+  write_text(dir / "particles.pvd", pvd);
+
+  const fs::path vtp = dir / "particles/particles_000001.vtp";
+  const std::string data = text_of(vtp);
+  write_text(vtp, data.substr(0, data.size() / 2));
+  expect_refused(test::run_sedem("render " + dir.string()), {"particles_000001.vtp"});
+  fs::remove(vtp);
+  expect_refused(test::run_sedem("render " + dir.string()), {"particles_000001.vtp"});
+  write_text(vtp, data);
+  EXPECT_EQ(test::run_sedem("render --quiet " + dir.string()).status, 0);
+
+  const fs::path resumed = fresh("damaged_series_resume");
+  run_and_kill_after_checkpoint(resumed);
+  write_text(resumed / "particles.pvd", text_of(resumed / "particles.pvd").substr(0, 150));
+  expect_refused(test::run_sedem("run --resume " + resumed.string()), {"particles.pvd"});
+}
+
+// 6. `reduce`: results that cannot be right are refused; spreadsheet CSVs are read; a write
+// error is an error.
+TEST(Faults, ReduceRefusesWhatItCannotComputeAndReadsSpreadsheetCsv) {
+  const fs::path dir = fresh("reduce");
+  fs::create_directories(dir);
+  const std::string rows = "2,42,22,5\n5,35,22,5\n15,28,22,5\n";
+  write_text(dir / "plain.csv",
+             "time_min,reading_g_per_l,temperature_c,composite_correction_g_per_l\n" + rows);
+  write_text(dir / "excel.csv",
+             "\xEF\xBB\xBF\"time_min\",\"reading_g_per_l\",\"temperature_c\","
+             "\"composite_correction_g_per_l\"\r\n" +
+                 rows);
+  write_text(
+      dir / "huge.csv",
+      "time_min,reading_g_per_l,temperature_c,composite_correction_g_per_l\n2,42,22,1e308\n");
+  auto plain = test::run_sedem("reduce " + (dir / "plain.csv").string());
+  auto excel = test::run_sedem("reduce " + (dir / "excel.csv").string());
+  ASSERT_EQ(plain.status, 0) << plain.output;
+  ASSERT_EQ(excel.status, 0) << excel.output;
+  EXPECT_EQ(excel.output, plain.output);
+  expect_refused(test::run_sedem("reduce " + (dir / "huge.csv").string()),
+                 {"composite_correction_g_per_l"});
+  expect_refused(test::run_sedem("reduce " + (dir / "plain.csv").string() + " --mass-g 0.001"),
+                 {"percent_finer", "--mass-g"});
+  // stderr to the pipe, stdout to a full disk.
+  auto full = test::run_sedem("--version > /dev/null; ( exec " SEDEM_EXE " reduce " +
+                              (dir / "plain.csv").string() + " 2>&1 > /dev/full )");
+  EXPECT_EQ(full.status, 4) << full.output;
+  EXPECT_NE(full.output.find("No space left"), std::string::npos) << full.output;
+}
+
+// 7. Values the instruments cannot use are refused at the scene check: exit 2, key, value.
+TEST(Faults, ValuesTheInstrumentsCannotUseAreRefusedAtTheSceneCheck) {
+  const fs::path out = fresh("late");
+  for (const char* set :
+       {"instruments.pipette.depth_fraction=0", "instruments.pipette.depth_fraction=1",
+        "instruments.buoyancy.depth_fraction=0", "instruments.buoyancy.depth_fraction=1",
+        "instruments.pipette.volume_ml=1000", "fluid.density=500", "cylinder.height_m=1e-4",
+        "forces.drag=off"}) {
+    auto r = test::run_sedem("run " + kDemo + kShort + " --set " + set + " --out " + out.string());
+    EXPECT_EQ(r.status, 2) << set << "\n" << r.output;
+    const std::string key = std::string(set).substr(0, std::string(set).find('='));
+    EXPECT_NE(r.output.find(" = "), std::string::npos) << r.output;
+    EXPECT_TRUE(r.output.find(key) != std::string::npos ||
+                r.output.find("cylinder.height_m") != std::string::npos)
+        << set << "\n"
+        << r.output;
+    EXPECT_FALSE(fs::exists(out / "run.json")) << set << ": refused after it started";
+  }
+}
+
+TEST(Faults, EveryShippedSceneRuns) {
+  for (const auto& e : fs::directory_iterator(kScenes)) {
+    if (e.path().extension() != ".toml") continue;
+    const fs::path out = fresh("shipped_" + e.path().stem().string());
+    auto r = test::run_sedem("run " + e.path().string() + " --out " + out.string() +
+                             " --set run.end_time_s=0.5 --set output.frames=false"
+                             " --set output.particles=false --set output.fields=false --quiet");
+    EXPECT_EQ(r.status, 0) << e.path() << "\n" << r.output;
+  }
+}
+
+// 8. A folder or a device is no scene.
+TEST(Faults, ARunOfAFolderOrADeviceIsRefused) {
+  const fs::path out = fresh("not_a_file");
+  expect_refused(test::run_sedem("run /tmp --out " + out.string()), {"/tmp", "not a scene file"});
+  expect_refused(test::run_sedem("run /dev/zero --out " + out.string()),
+                 {"/dev/zero", "not a scene file"});
+  EXPECT_FALSE(fs::exists(out));
+}
+
+// 9. A run that cannot fit in memory is refused before it starts, with the estimate and the
+// memory there is (here an address-space limit stands for a small machine).
+TEST(Faults, ARunThatCannotFitInMemoryIsRefusedBeforeItStarts) {
+  const fs::path out = fresh("memory");
+  auto r = test::run_sedem("--version > /dev/null; ( ulimit -v 3000000; exec " SEDEM_EXE " run " +
+                           kDemo + kShort + " --set forces.voidage_cell_mm=0.01 --out " +
+                           out.string() + " )");
+  expect_refused(r, {"needs about", "GB of memory", "forces.voidage_cell_mm"});
+}
+
+// 10 and 13. SIGKILL at seeded random moments: the run goes on from its last periodic
+// checkpoint and ends bit-identical to one never stopped; run.json covers every leg.
+TEST(Faults, AKilledRunResumesFromItsLastCheckpointBitForBit) {
+  const fs::path whole = fresh("kill_whole"), parts = fresh("kill_parts");
+  const std::string scene = kDemo +
+                            " --set run.end_time_s=20 --set output.frames=false --quiet"
+                            " --set integrator.crossing_fraction=0.1"
+                            " --set sample.simulated_count=600 --set run.checkpoint_interval_s=0.2";
+  ASSERT_EQ(test::run_sedem("run " + scene + " --out " + whole.string()).status, 0);
+  std::mt19937 rng(16);
+  std::string command = "run " + scene + " --out " + parts.string();
+  int kills = 0;
+  for (int leg = 0; leg < 3; ++leg) {
+    // Killed at a random moment after the first checkpoint exists (the first leg waits for
+    // it, however loaded the machine): a resumed leg may be killed before it writes its own.
+    const double delay = 0.2 + std::uniform_real_distribution<double>(0, 1)(rng);
+    auto r = test::run_sedem(command + " & pid=$!; for i in $(seq 600); do [ -f " + parts.string() +
+                             "/checkpoint.json ] && break; sleep 0.05; done; " + "sleep " +
+                             std::to_string(delay) + "; kill -KILL $pid; wait $pid");
+    if (r.status == 0) break;  // it ended before the kill
+    ASSERT_EQ(r.status, 137) << r.output;
+    ASSERT_TRUE(fs::exists(parts / "checkpoint.bin"));
+    ++kills;
+    command = "run --resume " + parts.string() + " --quiet";
+  }
+  ASSERT_GT(kills, 0);
+  if (fs::exists(parts / "checkpoint.bin")) {
+    auto r = test::run_sedem("run --resume " + parts.string() + " --quiet");
+    ASSERT_EQ(r.status, 0) << r.output;
+  }
+  auto record = read_json(parts / "run.json");
+  EXPECT_EQ(record["status"], "complete");
+  EXPECT_EQ(record["scene_file"], kDemo);
+  EXPECT_GE(record["legs"].get<int>(), 2);
+  EXPECT_FALSE(fs::exists(parts / "checkpoint.bin"));
+  for (const char* file : {"readings_buoyancy.csv", "readings_pipette.csv", "granulometry.csv",
+                           "particles.pvd", "fields.pvd"})
+    EXPECT_EQ(text_of(parts / file), text_of(whole / file)) << file;
+  EXPECT_EQ(text_of(parts / "particles/particles_000002.vtp"),
+            text_of(whole / "particles/particles_000002.vtp"));
+}
+
+// 11. Every place a run writes to is checked before it simulates; a failure keeps its first
+// cause, leaves no temporary file and finishes run.json as "failed".
+TEST(Faults, UnwritableOutputsAreFoundBeforeSimulating) {
+  const fs::path out = fresh("blocked");
+  fs::create_directories(out);
+  write_text(out / "figures", "a file where the figures folder goes");
+  auto r = test::run_sedem("run " + kDemo + kShort + " --out " + out.string());
+  EXPECT_EQ(r.status, 3) << r.output;
+  EXPECT_NE(r.output.find("figures"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out / "run.json"));
+}
+
+// 13. A huge name is refused by its length.
+TEST(Faults, AHugeNameIsRefused) {
+  const fs::path out = fresh("name");
+  expect_refused(test::run_sedem("run " + kDemo + kShort + " --set name=\\\"" +
+                                 std::string(5000, 'n') + "\\\" --out " + out.string()),
+                 {"name is 5000 characters long"});
+}
+
+}  // namespace
+}  // namespace sedem
