@@ -14,6 +14,7 @@
 #include "app/exit_codes.h"
 #include "app/output_observers.h"
 #include "app/progress.h"
+#include "app/run_folder.h"
 #include "app/run_record.h"
 #include "app/stop_signals.h"
 #include "app/test_outputs.h"
@@ -85,13 +86,16 @@ int run(const RunOptions& options) {
   auto& qt = *QCoreApplication::instance();
   qRegisterMetaType<std::shared_ptr<const Snapshot>>();
   const bool resuming = !options.resume_dir.empty();
-  const fs::path out = resuming ? options.resume_dir : options.out_dir;
+  fs::path out = options.resume_dir;
 
   Scene scene;
   Sample sample;
   try {
     scene = resuming ? scene_of_run(out) : load_scene(options.scene, options.overrides);
     sample = build_sample(scene);
+    if (!resuming)
+      out = options.out_dir.empty() ? fs::path("out") / safe_folder_name(scene.name)
+                                    : fs::path(options.out_dir);
   } catch (const SceneError& e) {
     std::cerr << "sedem: invalid scene: " << e.what() << '\n';
     return exit_code::invalid_scene;
@@ -104,9 +108,13 @@ int run(const RunOptions& options) {
   record.scene_file = resuming ? (out / "run.json").string() : options.scene;
   record.seed = scene.sample.seed;
   record.particle_count = sample.particles.size();
+  std::optional<RunFolder> folder;  // locked until the run ends
   try {
-    fs::create_directories(out);
+    folder.emplace(out, resuming, options.overwrite);
     write_run_record(record, scene, out / "run.json");
+  } catch (const RunFolder::Error& e) {
+    std::cerr << "sedem: " << e.what() << '\n';
+    return exit_code::output_unwritable;
   } catch (const std::exception& e) {
     std::cerr << "sedem: cannot write to the output folder " << out << ": " << e.what() << '\n';
     return exit_code::output_unwritable;
@@ -208,6 +216,7 @@ int run(const RunOptions& options) {
   record.simulated_time = engine.time();
   record.wall_time = progress.wall_seconds();
   record.particle_steps = engine.stats().particle_steps;
+  record.files = run_files(out);
   try {
     write_run_record(record, scene, out / "run.json");
   } catch (const std::exception& e) {
@@ -220,7 +229,7 @@ int run(const RunOptions& options) {
   else if (status != exit_code::ok)
     std::cerr << "sedem: " << record.message << '\n';
   else if (!options.quiet)
-    std::printf("sedem: done in %.1f s; wrote %s\n", record.wall_time, out.c_str());
+    std::fputs(run_summary(record.results, record.wall_time, out).c_str(), stdout);
   return status;
 }
 

@@ -59,6 +59,7 @@ void write_run_record(const RunRecord& r, Scene& scene, const std::filesystem::p
   j["particle_steps_per_s"] = r.wall_time > 0 ? r.particle_steps / r.wall_time : 0.0;
   j["peak_memory_bytes"] = peak_memory_bytes();
   j["results"] = r.results;
+  j["files"] = r.files;
   auto tmp = file;
   tmp += ".tmp";
   {

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -23,6 +24,7 @@ struct RunRecord {
   double wall_time = 0;
   double particle_steps = 0;
   nlohmann::json results = nlohmann::json::object();  // each test's error and bias
+  std::vector<std::string> files;  // what the run wrote into its folder, relative to it
 };
 
 // Every scene key with its value in user units, as a JSON object keyed by the dotted name.
