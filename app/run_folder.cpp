@@ -8,6 +8,8 @@
 #include <cctype>
 #include <cerrno>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <set>
 
 namespace sedem::app {
@@ -86,6 +88,11 @@ RunFolder::RunFolder(fs::path dir, bool resuming, bool overwrite) : dir_(std::mo
   if (entries.empty()) return;
   if (!overwrite) {
     const bool old_run = fs::exists(dir_ / "run.json");
+    std::ifstream record(dir_ / "run.json");
+    const std::string text{std::istreambuf_iterator<char>(record), {}};
+    if (text.find("\"status\": \"interrupted\"") != std::string::npos)
+      throw Error(dir_.string() + " holds an interrupted run: go on with it with sedem run " +
+                  "--resume " + dir_.string() + ", or give --overwrite to replace it");
     throw Error(dir_.string() + (old_run ? " holds another run" : " is not empty") +
                 "; choose another --out, or give --overwrite to replace " +
                 (old_run ? "that run" : "the run outputs in it"));

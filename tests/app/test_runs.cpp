@@ -140,6 +140,11 @@ TEST(Runs, TwoRunsIntoOneFolderCannotBothProceed) {
   // The first run was not disturbed: it stopped on SIGTERM with its folder whole.
   EXPECT_EQ(read_json(out / "run.json")["status"], "interrupted");
   expect_one_run(out);
+  // A new run into the interrupted run's folder is pointed to --resume.
+  auto again = test::run_sedem("run " + kDemo + " --out " + out.string() + kSmall + "10");
+  EXPECT_EQ(again.status, 3);
+  EXPECT_NE(again.output.find("sedem run --resume " + out.string()), std::string::npos)
+      << again.output;
 }
 
 TEST(Runs, AFinishedRunPrintsEachTestsErrorAndBias) {
