@@ -15,23 +15,9 @@
 #include "app/reduce_command.h"
 #include "app/render_command.h"
 #include "app/run_command.h"
+#include "core/scene/edit_distance.h"
 
 namespace {
-
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
 
 // "; did you mean 'run'?" when a command is close to `typed` (at most two edits, or the same
 // letters in another order), else "".
@@ -42,7 +28,7 @@ std::string suggestion(const std::string& typed, const std::vector<std::string>&
     std::string a = typed, b = name;
     std::sort(a.begin(), a.end());
     std::sort(b.begin(), b.end());
-    const std::size_t d = a == b ? 1 : edit_distance(typed, name);
+    const std::size_t d = a == b ? 1 : sedem::edit_distance(typed, name);
     if (d < best_distance) best = name, best_distance = d;
   }
   return best.empty() ? "" : "; did you mean '" + best + "'?";
