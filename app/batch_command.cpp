@@ -202,7 +202,11 @@ std::vector<BatchRun> plan_batch(const BatchOptions& options) {
       if (!variant.empty()) {
         run.overrides.push_back(variant);
         run.value = variant.substr(variant.find('=') + 1);
-        run.folder = safe_folder_name(stem + "__" + variant);
+        // Two values may give one folder name once made safe ("a/b" and "a_b").
+        const std::string base = safe_folder_name(stem + "__" + variant);
+        run.folder = base;
+        for (int k = 2; used.count(run.folder); ++k) run.folder = base + "_" + std::to_string(k);
+        used.insert(run.folder);
       }
       runs.push_back(std::move(run));
     }

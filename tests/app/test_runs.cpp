@@ -232,13 +232,15 @@ TEST(Batch, ScenesSharingANameGetTheirOwnFolders) {
 TEST(Batch, ASweptValueCannotLeaveTheOutputFolder) {
   const fs::path out = fresh("batch_escape");
   auto r = test::run_sedem("batch " + kDemo + " --out " + (out / "runs").string() +
-                           " --sweep 'name=\"/../../escaped\"'" + kSmall + "10 --quiet");
+                           " --sweep 'name=\"/../../escaped\",\"_.._.._escaped\"'" + kSmall +
+                           "10 --quiet");
   ASSERT_EQ(r.status, 0) << r.output;
+  // Two values that give one safe name: two folders still.
   std::vector<fs::path> made;
   for (const auto& e : fs::directory_iterator(out / "runs"))
     if (e.is_directory()) made.push_back(e.path());
-  ASSERT_EQ(made.size(), 1u);
-  EXPECT_TRUE(fs::exists(made[0] / "run.json"));
+  ASSERT_EQ(made.size(), 2u);
+  for (const auto& dir : made) EXPECT_TRUE(fs::exists(dir / "run.json")) << dir;
   for (const auto& e : fs::directory_iterator(out)) EXPECT_EQ(e.path().filename(), "runs");
 }
 
