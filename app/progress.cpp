@@ -85,7 +85,11 @@ std::string Progress::line(double wall, double simulated_time, double particle_s
                                   clock_text(wall).c_str(), eta_text.c_str(), rate);
   // The bar takes what the numbers leave of the line, one column short of the edge (a
   // character in the last column makes some terminals wrap).
-  const int bar = std::min(30, columns_ - 1 - 2 - int(tail.size()));
+  // Its width is set by the simulated time at its widest (the end time), so that the bar
+  // keeps its width as the run goes on.
+  const int widest =
+      int(tail.size() - clock_text(simulated_time).size() + clock_text(end_time_).size());
+  const int bar = std::min(30, columns_ - 1 - 2 - std::max(widest, int(tail.size())));
   if (bar < 5) return tail.substr(1, std::size_t(columns_ - 1));
   const int filled = int(std::floor(fraction * bar));
   std::string text(std::size_t(bar + 2), '.');
