@@ -55,6 +55,10 @@ double Progress::wall_seconds() const {
 void Progress::update(double simulated_time, double particle_steps) {
   if (quiet_) return;
   const auto now = std::chrono::steady_clock::now();
+  // The rate's samples are taken more often than a log's lines, so that its first line
+  // has an ETA already.
+  const double wall = std::chrono::duration<double>(now - start_).count();
+  if (samples_.empty() || wall - samples_.back().first >= 0.5) note(wall, simulated_time);
   const double since = std::chrono::duration<double>(now - last_print_).count();
   if (since < (tty_ ? 0.2 : log_interval_)) return;
   last_print_ = now;
@@ -69,10 +73,14 @@ double Progress::eta(double wall, double simulated_time) const {
   return std::max(0.0, end_time_ - simulated_time) / rate;
 }
 
-std::string Progress::line(double wall, double simulated_time, double particle_steps) {
+void Progress::note(double wall, double simulated_time) {
   samples_.emplace_back(wall, simulated_time);
   // Keep the samples of the last kWindow seconds, and always two to measure a rate with.
   while (samples_.size() > 2 && wall - samples_[1].first >= kWindow) samples_.pop_front();
+}
+
+std::string Progress::line(double wall, double simulated_time, double particle_steps) {
+  note(wall, simulated_time);
   const double fraction = end_time_ > 0 ? std::clamp(simulated_time / end_time_, 0.0, 1.0) : 1.0;
   const double rate = wall > 0 ? particle_steps / wall : 0;
   const std::string eta_text = clock_text(eta(wall, simulated_time));

@@ -37,6 +37,7 @@ class Progress {
 
  private:
   void print(double simulated_time, double particle_steps);
+  void note(double wall, double simulated_time);  // a sample for the rate
   double end_time_;
   bool quiet_;
   std::FILE* out_;

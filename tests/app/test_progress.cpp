@@ -56,6 +56,8 @@ TEST(Progress, OffATerminalPlainLinesAtIntervals) {
   EXPECT_EQ(text.find('\r'), std::string::npos) << text;
   EXPECT_NE(text.find("t = 10.0 of 120.0 s"), std::string::npos) << text;
   EXPECT_NE(text.find("t = 20.0 of 120.0 s"), std::string::npos) << text;
+  // The ETA is known from the second line on.
+  EXPECT_EQ(text.find("ETA --:--", text.find("t = 20.0")), std::string::npos) << text;
 }
 
 TEST(Progress, OnATerminalOneLineRedrawnInPlace) {
