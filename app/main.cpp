@@ -3,8 +3,11 @@
 #include <CLI/CLI.hpp>
 #include <QGuiApplication>
 
+#include <algorithm>
 #include <cstdio>
 #include <new>
+#include <string>
+#include <vector>
 
 #include "app/batch_command.h"
 #include "app/bench_command.h"
@@ -14,6 +17,26 @@
 #include "app/reduce_command.h"
 #include "app/render_command.h"
 #include "app/run_command.h"
+#include "core/scene/edit_distance.h"
+
+namespace {
+
+// "; did you mean 'run'?" when a command is close to `typed` (at most two edits, or the same
+// letters in another order), else "".
+std::string suggestion(const std::string& typed, const std::vector<std::string>& names) {
+  std::string best;
+  std::size_t best_distance = 3;
+  for (const auto& name : names) {
+    std::string a = typed, b = name;
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    const std::size_t d = a == b ? 1 : sedem::edit_distance(typed, name);
+    if (d < best_distance) best = name, best_distance = d;
+  }
+  return best.empty() ? "" : "; did you mean '" + best + "'?";
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace sedem::app;
@@ -33,7 +56,12 @@ int main(int argc, char** argv) {
     if (run_options.scene.empty() && run_options.resume_dir.empty())
       throw CLI::RequiredError("a scene file or --resume DIR");
   });
-  run_cmd->add_option("--out", run_options.out_dir, "Output folder")->capture_default_str();
+  run_cmd->add_option("--out", run_options.out_dir,
+                      "Output folder (default: out/<scene name>); it must be empty, or hold "
+                      "the outputs of a run that --overwrite replaces");
+  run_cmd->add_flag("--overwrite", run_options.overwrite,
+                    "Replace the run that the output folder holds (its series, frames, "
+                    "figures, readings)");
   run_cmd->add_option("--set", run_options.overrides,
                       "Override a scene key, key=value (repeatable)");
   run_cmd->add_flag("-q,--quiet", run_options.quiet, "Print only warnings and errors");
@@ -47,6 +75,13 @@ int main(int argc, char** argv) {
   batch_cmd->add_option("--out", batch_options.out_dir, "Parent output folder")
       ->capture_default_str();
   batch_cmd->add_option("--set", batch_options.overrides, "Override a key in every run");
+  batch_cmd
+      ->add_option("-j,--jobs", batch_options.jobs,
+                   "Runs at once, each given its share of the cores (integrator.threads)")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
+  batch_cmd->add_flag("--overwrite", batch_options.overwrite,
+                      "Replace the runs that the sub-folders hold");
   batch_cmd->add_flag("-q,--quiet", batch_options.quiet, "Print only warnings and errors");
 
   RenderOptions render_options;
@@ -133,6 +168,18 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"engine", "accuracy", "speedup"}))
       ->capture_default_str();
   bench_cmd->add_option("args", bench_options.args, "Arguments for the benchmark (after --)");
+
+  std::vector<std::string> names;
+  for (const auto* sub : cli.get_subcommands({})) names.push_back(sub->get_name());
+  if (argc > 1 && argv[1][0] != '-' &&
+      std::find(names.begin(), names.end(), argv[1]) == names.end()) {
+    std::fprintf(stderr, "sedem: '%s' is not a command%s\nCommands: ", argv[1],
+                 suggestion(argv[1], names).c_str());
+    for (std::size_t i = 0; i < names.size(); ++i)
+      std::fprintf(stderr, "%s%s", i ? ", " : "", names[i].c_str());
+    std::fprintf(stderr, " (sedem --help)\n");
+    return exit_code::usage;
+  }
 
   try {
     cli.parse(argc, argv);

@@ -16,6 +16,7 @@
 #include "app/exit_codes.h"
 #include "app/output_observers.h"
 #include "app/progress.h"
+#include "app/run_folder.h"
 #include "app/run_preflight.h"
 #include "app/run_record.h"
 #include "app/stop_signals.h"
@@ -126,8 +127,7 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   auto& qt = *QCoreApplication::instance();
   qRegisterMetaType<std::shared_ptr<const Snapshot>>();
   const bool resuming = !options.resume_dir.empty();
-  const fs::path out = resuming ? options.resume_dir : options.out_dir;
-  ctx.out = out;
+  fs::path out = options.resume_dir;
   Scene& scene = ctx.scene;
   RunRecord& record = ctx.record;
 
@@ -138,6 +138,9 @@ int run_in(const RunOptions& options, RunContext& ctx) {
                      : load_scene(options.scene, options.overrides);
     if (const std::string refusal = memory_refusal(scene); !refusal.empty())
       throw Failure{exit_code::invalid_scene, refusal};
+    if (!resuming)
+      out = options.out_dir.empty() ? fs::path("out") / safe_folder_name(scene.name)
+                                    : fs::path(options.out_dir);
     sample = build_sample(scene);
   } catch (const SceneError& e) {
     std::cerr << "sedem: invalid scene: " << e.what() << '\n';
@@ -145,6 +148,15 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   } catch (const Failure& f) {
     std::cerr << "sedem: " << f.message << '\n';
     return f.status;
+  }
+
+  ctx.out = out;
+  std::optional<RunFolder> folder;  // one run per folder, locked until the run ends
+  try {
+    folder.emplace(out, resuming, options.overwrite);
+  } catch (const RunFolder::Error& e) {
+    std::cerr << "sedem: " << e.what() << '\n';
+    return exit_code::output_unwritable;
   }
 
   // A resumed run goes on from a checkpoint that proves it belongs to this run.
@@ -334,6 +346,7 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   // on from the checkpoint).
   record.wall_time = wall_so_far();
   record.particle_steps = engine.stats().particle_steps;
+  record.files = run_files(out);
   try {
     write_run_record(record, scene, out / "run.json");
   } catch (const std::exception& e) {
@@ -352,7 +365,7 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   else if (status != exit_code::ok)
     std::cerr << "sedem: " << record.message << '\n';
   else if (!options.quiet)
-    std::printf("sedem: done in %.1f s; wrote %s\n", record.wall_time, out.c_str());
+    std::fputs(run_summary(record.results, record.wall_time, out).c_str(), stdout);
   return status;
 }
 

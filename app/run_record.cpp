@@ -61,6 +61,7 @@ void write_run_record(const RunRecord& r, Scene& scene, const std::filesystem::p
   j["legs"] = r.legs;
   j["peak_memory_bytes"] = peak_memory_bytes();
   j["results"] = r.results;
+  j["files"] = r.files;
   write_atomically(file, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
 }
 

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +25,7 @@ struct RunRecord {
   double particle_steps = 0;
   std::int64_t legs = 1;  // the first run and each --resume that went on with it
   nlohmann::json results = nlohmann::json::object();  // each test's error and bias
+  std::vector<std::string> files;  // what the run wrote into its folder, relative to it
 };
 
 // Every scene key with its value in user units, as a JSON object keyed by the dotted name.

@@ -10,6 +10,7 @@ packages=(
   libvtk9-dev qt6-base-dev
   libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev libglew-dev
   libgtest-dev googletest clang-format
+  python3 python3-numpy python3-vtk9 python3-matplotlib python3-pytest
 )
 
 missing=()

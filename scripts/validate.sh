@@ -72,7 +72,8 @@ lean=(--set output.frames=false --set output.fields=false --set output.particles
 # Ctrl-C stops the whole validation.
 batch() {
   local status=0
-  "$sedem" batch "$@" || status=$?
+  # Each run replaces the one an earlier validation left in its folder.
+  "$sedem" batch "$@" --overwrite || status=$?
   if [ "$status" -eq 130 ]; then exit 130; fi
   if [ "$status" -ne 0 ]; then echo "validate.sh: a run failed (exit $status); see run.json" >&2; fi
 }

@@ -1,4 +1,5 @@
 #include "core/scene/schema.h"
+#include "core/scene/edit_distance.h"
 
 #include <algorithm>
 #include <sstream>
@@ -54,7 +55,7 @@ const Param* Schema::find(const std::string& key) const {
   return it == params_.end() ? nullptr : &*it;
 }
 
-static std::size_t edit_distance(const std::string& a, const std::string& b) {
+std::size_t edit_distance(const std::string& a, const std::string& b) {
   std::vector<std::size_t> row(b.size() + 1);
   for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
   for (std::size_t i = 1; i <= a.size(); ++i) {

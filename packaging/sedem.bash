@@ -1,0 +1,43 @@
+# bash completion for sedem: commands, each command's options, scene files and run folders.
+_sedem() {
+  local cur prev words cword
+  if declare -F _init_completion >/dev/null; then
+    _init_completion || return
+  else
+    cur=${COMP_WORDS[COMP_CWORD]} prev=${COMP_WORDS[COMP_CWORD-1]}
+    words=("${COMP_WORDS[@]}") cword=$COMP_CWORD
+  fi
+  local commands="run batch render reduce bench"
+  local command="" i
+  for ((i = 1; i < cword; i++)); do
+    case ${words[i]} in run|batch|render|reduce|bench) command=${words[i]}; break ;; esac
+  done
+  if [[ -z $command ]]; then
+    COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
+    return
+  fi
+  local opts
+  case $command in
+    run) opts="--resume --out --overwrite --set --quiet -q --help -h" ;;
+    batch) opts="--sweep --out --set --jobs -j --overwrite --quiet -q --help -h" ;;
+    render) opts="--out --quiet -q --help -h" ;;
+    reduce) opts="--out --method --gs --mass-g --help -h" ;;
+    bench) opts="--help -h" ;;
+  esac
+  case $prev in
+    --out|--resume) COMPREPLY=($(compgen -d -- "$cur")); return ;;
+    --method) COMPREPLY=($(compgen -W "d422 d7928" -- "$cur")); return ;;
+    --set|--sweep|--gs|--mass-g|--jobs|-j) return ;;
+  esac
+  if [[ $cur == -* ]]; then
+    COMPREPLY=($(compgen -W "$opts" -- "$cur"))
+    return
+  fi
+  case $command in
+    run|batch) COMPREPLY=($(compgen -f -X '!*.toml' -- "$cur") $(compgen -d -- "$cur")) ;;
+    render) COMPREPLY=($(compgen -d -- "$cur")) ;;
+    reduce) COMPREPLY=($(compgen -f -X '!*.csv' -- "$cur") $(compgen -d -- "$cur")) ;;
+    bench) COMPREPLY=($(compgen -W "engine accuracy speedup" -- "$cur")) ;;
+  esac
+}
+complete -o filenames -F _sedem sedem

@@ -1,0 +1,112 @@
+"""The Python package against a real `sedem`: run through ctest (SEDEM_EXE names the build's
+program, SEDEM_TEST_OUTPUT where runs go)."""
+
+import os
+import re
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import sedem
+
+ROOT = Path(__file__).resolve().parents[2]
+DEMO = str(ROOT / "scenes" / "demo.toml")
+OUT = Path(os.environ.get("SEDEM_TEST_OUTPUT", "/tmp")) / "python"
+SMALL = {"sample.simulated_count": 300, "output.frames": False, "run.end_time_s": 60,
+         "instruments.hydrometer.times_min": [0.25, 0.5, 1]}
+
+
+@pytest.fixture(scope="module")
+def demo_run():
+    out = OUT / "run"
+    shutil.rmtree(out, ignore_errors=True)
+    return sedem.run(DEMO, out=out, set=SMALL)
+
+
+def test_run_applies_overrides_and_loads_the_record(demo_run):
+    assert demo_run.status == "complete"
+    assert demo_run.scene["sample.simulated_count"] == 300
+    assert demo_run.scene["output.frames"] is False
+    assert demo_run.scene["instruments.hydrometer.times_min"] == [0.25, 0.5, 1]
+    assert demo_run.record["particle_count"] == 300
+    assert set(demo_run.results) == {"hydrometer", "buoyancy", "pipette"}
+    for f in demo_run.files:
+        assert (demo_run.path / f).is_file(), f
+
+
+def test_csv_as_arrays(demo_run):
+    readings = demo_run.table("readings_hydrometer", frame=False)
+    assert isinstance(readings["time_s"], np.ndarray)
+    np.testing.assert_allclose(readings["time_s"], [15, 30, 60])
+    g = demo_run.table("granulometry", frame=False)
+    assert g["test"].dtype.kind == "U"            # text stays text
+    assert np.isnan(g["time_s"][0])               # empty cells are NaN
+    assert "figures/fig18_granulometry" in demo_run.tables()
+
+
+def test_csv_as_a_dataframe_where_pandas_is_installed(demo_run):
+    pandas = pytest.importorskip("pandas")
+    g = demo_run.table("granulometry")
+    assert isinstance(g, pandas.DataFrame)
+    assert list(g.columns[:3]) == ["test", "source", "time_s"]
+
+
+def test_series_through_vtk(demo_run):
+    particles = demo_run.series("particles")
+    assert particles.times[0] == 0 and particles.times[-1] == 60
+    last = particles.arrays(-1)
+    assert last["diameter"].shape == (300,)
+    assert last["velocity"].shape == (300, 3)
+    assert last["points"].shape == (300, 3)
+    assert set(np.round(last["diameter"] * 1e6)) == {10, 60}
+    fields = demo_run.series("fields")
+    assert len(fields) == len(fields.files) > 1
+
+
+def test_a_failed_run_raises_with_the_message():
+    with pytest.raises(sedem.SedemError) as e:
+        sedem.run(DEMO, out=OUT / "bad", set={"fluid.viscosity": -2})
+    assert e.value.status == 2
+    assert "fluid.viscosity = -2 is out of range" in e.value.output
+
+
+def test_default_output_folder(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    r = sedem.run(DEMO, set=dict(SMALL, **{"run.end_time_s": 10}))
+    assert r.path == Path("out/demo") and r.status == "complete"
+
+
+def test_batch_returns_the_summary():
+    out = OUT / "batch"
+    shutil.rmtree(out, ignore_errors=True)
+    summary = sedem.batch(DEMO, out=out, sweep={"sample.simulated_count": [300, 400]},
+                          set=dict(SMALL, **{"run.end_time_s": 20}), jobs=2)
+    if not isinstance(summary, dict):
+        summary = {c: summary[c].to_numpy() for c in summary.columns}
+    np.testing.assert_array_equal(summary["sample.simulated_count"], [300, 400])
+    assert list(summary["status"]) == ["complete", "complete"]
+    assert (out / "summary_error.png").is_file()
+
+
+def test_reduce(tmp_path):
+    lab = tmp_path / "lab.csv"
+    lab.write_text("time_min,reading_g_per_l,temperature_c\n2,40,20\n5,30,20\n")
+    table = sedem.reduce(str(lab), mass_g=50, frame=False)
+    np.testing.assert_allclose(table["percent_finer"], [80, 60])
+
+
+def test_the_worked_example_of_docs_python_md(tmp_path, monkeypatch):
+    """docs/python.md's example, as printed, draws Fig. 18 from a run."""
+    pytest.importorskip("matplotlib")
+    import matplotlib
+    matplotlib.use("Agg")
+    text = (ROOT / "docs" / "python.md").read_text()
+    blocks = re.findall(r"```python\n(.*?)```", text, re.S)
+    assert blocks, "docs/python.md has no python example"
+    monkeypatch.chdir(tmp_path)
+    os.symlink(ROOT / "scenes", tmp_path / "scenes")
+    example = blocks[0].replace('"sample.simulated_count": 1500', '"sample.simulated_count": 300')
+    exec(compile(example, "docs/python.md", "exec"), {})
+    assert (tmp_path / "fig18.png").stat().st_size > 10000

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# The README's two commands: demo.sh builds only the sedem program (not the tests and
+# benchmarks) and may run again over its own output; test.sh builds everything and runs ctest.
+# Checked with stand-ins for cmake, ctest and sedem that record how they are called.
+set -euo pipefail
+src=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$work/repo/scripts" "$work/repo/build/app" "$work/bin"
+cp "$src"/scripts/{setup.sh,build.sh,demo.sh,test.sh} "$work/repo/scripts/"
+for tool in cmake ctest; do
+  printf '#!/bin/sh\necho "%s $*" >> "%s/calls"\n' "$tool" "$work" > "$work/bin/$tool"
+  chmod +x "$work/bin/$tool"
+done
+printf '#!/bin/sh\necho "sedem $*" >> "%s/calls"\n' "$work" > "$work/repo/build/app/sedem"
+chmod +x "$work/repo/build/app/sedem"
+# setup.sh: every package present (no apt call), as on a set-up machine.
+printf '#!/bin/sh\necho "install ok installed"\n' > "$work/bin/dpkg-query"
+chmod +x "$work/bin/dpkg-query"
+
+fail() { echo "FAIL: $*"; echo "--- calls:"; cat "$work/calls"; exit 1; }
+
+PATH="$work/bin:$PATH" "$work/repo/scripts/demo.sh" > /dev/null
+grep -q -- "^cmake --build build .*--target sedem" "$work/calls" || fail "demo.sh: not only sedem"
+[ "$(grep -c -- "^cmake --build" "$work/calls")" = 1 ] || fail "demo.sh: more than one build"
+grep -q -- "^sedem run scenes/demo.toml --out out/demo --overwrite" "$work/calls" ||
+  fail "demo.sh: the demo cannot run twice (no --overwrite)"
+
+: > "$work/calls"
+PATH="$work/bin:$PATH" "$work/repo/scripts/test.sh" > /dev/null
+build=$(grep -- "^cmake --build" "$work/calls") || fail "test.sh: no build"
+case $build in *--target*) fail "test.sh: builds only some targets: $build" ;; esac
+grep -q "^ctest " "$work/calls" || fail "test.sh: no ctest"
+echo "quick start: demo.sh builds sedem only and overwrites its demo; test.sh builds all"
