@@ -75,6 +75,20 @@ void as_steps(PlotSeries& s) {
   s.y = std::move(y);
 }
 
+// Every curve (and band) inside the y axis with a margin, none on its limits; at least
+// 1 kg/m^3 (or unit) tall, so that tick labels never repeat.
+void fit_y_range(Plot& plot) {
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (const auto& series : plot.series)
+    for (const auto* v : {&series.y, &series.y_low})
+      for (double y : *v)
+        if (std::isfinite(y)) lo = std::min(lo, y), hi = std::max(hi, y);
+  if (lo <= hi) {
+    const double pad = std::max(0.08 * (hi - lo), 0.5);
+    plot.y.range = std::pair{lo - pad, hi + pad};
+  }
+}
+
 template <class Series, class Member>
 Plot against_time(const std::vector<Series>& samples, std::string title, PlotAxis y, Member member,
                   double factor, LegendCorner legend = LegendCorner::top_right) {
@@ -215,15 +229,7 @@ Figure fig13_bulb_density(const std::vector<SampleBulbDensity>& samples) {
       mean.color = color;
       plot.series.push_back(std::move(mean));
     }
-    // Every curve, its spread and the t = 0 line inside the axes, none on their limits.
-    double lo = HUGE_VAL, hi = -HUGE_VAL;
-    for (const auto& series : plot.series)
-      for (const auto* v : {&series.y, &series.y_low})
-        for (double y : *v) lo = std::min(lo, y), hi = std::max(hi, y);
-    if (lo <= hi) {
-      const double pad = std::max(0.08 * (hi - lo), 0.5);
-      plot.y.range = std::pair{lo - pad, hi + pad};
-    }
+    fit_y_range(plot);
     panels.push_back(std::move(plot));
   }
   return sample_grid("Density along the bulb: band means, shaded \u00b1 one standard error",
@@ -241,6 +247,7 @@ Figure fig14_bulb_average(const std::vector<BulbAverageSeries>& samples) {
     eq19.color = kBlack;
     plot.series.push_back(std::move(eq19));
     plot.series.emplace_back("simulation", s.time_s, s.simulated_kg_m3, SeriesStyle::points);
+    fit_y_range(plot);
     panels.push_back(std::move(plot));
   }
   return sample_grid("Bulb average density: simulation and Eq. 19", std::move(panels));

@@ -155,6 +155,10 @@ TEST(PaperFigures, Fig14BulbAverage) {
   ASSERT_EQ(f.panels.size(), 1u);
   EXPECT_TRUE(f.panels[0].x.log);
   EXPECT_EQ(f.panels[0].series[0].name, "Eq. 19");
+  // No point on the axis limits: a margin around the data.
+  ASSERT_TRUE(f.panels[0].y.range.has_value());
+  EXPECT_LT(f.panels[0].y.range->first, 1000.0);
+  EXPECT_GT(f.panels[0].y.range->second, 1016.0);
   expect_matches(f, "fig14.png");
 }
 
