@@ -65,7 +65,8 @@ render::LargestDiameterInput fig12_input(const std::vector<LabelledResults>& run
 std::vector<render::SampleBulbDensity> fig13_input(const std::vector<LabelledResults>& runs) {
   std::vector<render::SampleBulbDensity> out;
   for (const auto& run : runs) {
-    render::SampleBulbDensity s{run.label, {}};
+    render::SampleBulbDensity s{
+        run.label, {}, run.simulated_count, run.column_height, run.homogeneous_density};
     for (const auto& h : run.results.hydrometer)
       s.profiles.push_back({h.time, h.profile_offset, h.profile_density});
     if (!s.profiles.empty()) out.push_back(std::move(s));
@@ -161,15 +162,17 @@ std::vector<render::SampleGrading> fig18_input(const std::vector<LabelledResults
 }
 
 void write_figures(const std::vector<LabelledResults>& runs, const std::filesystem::path& dir) {
+  const bool svg =
+      std::any_of(runs.begin(), runs.end(), [](const auto& r) { return r.vector_figures; });
   if (auto in = fig11_input(runs); !in.samples.empty())
     render::write_mass_bands(in, dir / "fig11_column");
-  if (auto in = fig12_input(runs); !in.samples.empty()) render::write_fig12(in, dir);
-  if (auto in = fig13_input(runs); !in.empty()) render::write_fig13(in, dir);
-  if (auto in = fig14_input(runs); !in.empty()) render::write_fig14(in, dir);
-  if (auto in = fig15_input(runs); !in.empty()) render::write_fig15(in, dir);
-  if (auto in = fig16_input(runs); !in.empty()) render::write_fig16(in, dir);
-  if (auto in = fig17_input(runs); !in.empty()) render::write_fig17(in, dir);
-  if (auto in = fig18_input(runs); !in.empty()) render::write_fig18(in, dir);
+  if (auto in = fig12_input(runs); !in.samples.empty()) render::write_fig12(in, dir, svg);
+  if (auto in = fig13_input(runs); !in.empty()) render::write_fig13(in, dir, svg);
+  if (auto in = fig14_input(runs); !in.empty()) render::write_fig14(in, dir, svg);
+  if (auto in = fig15_input(runs); !in.empty()) render::write_fig15(in, dir, svg);
+  if (auto in = fig16_input(runs); !in.empty()) render::write_fig16(in, dir, svg);
+  if (auto in = fig17_input(runs); !in.empty()) render::write_fig17(in, dir, svg);
+  if (auto in = fig18_input(runs); !in.empty()) render::write_fig18(in, dir, svg);
 }
 
 }  // namespace sedem::app

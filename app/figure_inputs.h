@@ -17,6 +17,9 @@ struct LabelledResults {
   double column_height = 0.457;
   double column_width = 0.0635;
   double particle_density = 2500;
+  double simulated_count = 0;      // simulated particles: Fig. 13's band width
+  double homogeneous_density = 0;  // kg/m^3, the suspension at t = 0 (Fig. 13)
+  bool vector_figures = false;     // output.vector_figures: Figs. 12-18 also as SVG
 };
 
 render::MassBandsFigure fig11_input(const std::vector<LabelledResults>& runs);
@@ -30,7 +33,8 @@ std::vector<render::BuoyancySeries> fig16_input(const std::vector<LabelledResult
 std::vector<render::PipetteSeries> fig17_input(const std::vector<LabelledResults>& runs);
 std::vector<render::SampleGrading> fig18_input(const std::vector<LabelledResults>& runs);
 
-// Writes every figure the runs have data for into `dir` (PNG + CSV each); several runs
+// Writes every figure the runs have data for into `dir` (PNG + CSV each, and SVG for Figs.
+// 12-18 when a run asks for vector figures); several runs
 // share each figure, one panel (or column of panels) per run.
 void write_figures(const std::vector<LabelledResults>& runs, const std::filesystem::path& dir);
 

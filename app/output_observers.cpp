@@ -60,6 +60,8 @@ void FieldsObserver::observe(const Snapshot& snapshot) {
   out.time_s = snapshot.time;
   out.column_height_m = scene_.cylinder.height;
   out.section_width_m = scene_.cylinder.diameter;
+  out.particle_density_kg_m3 = scene_.sample.particle_density;
+  out.fluid_density_kg_m3 = scene_.fluid.density;
   out.suspension_density_kg_m3 = f.density();
   out.concentration_kg_m3 = f.concentration();
   writer_.write(out);

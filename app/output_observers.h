@@ -43,7 +43,7 @@ class ColumnFrameObserver : public Observer {
   render::ColumnAnimation animation_;
 };
 
-// fields.pvd + fields/*.vti at every output time: the layer density and concentration.
+// fields.pvd + fields/*.vtp at every output time: the layer density and concentration.
 class FieldsObserver : public Observer {
  public:
   FieldsObserver(const Scene& scene, const std::filesystem::path& out_dir, double resume_from);

@@ -46,7 +46,14 @@ LabelledResults labelled_results(const Scene& scene, const RunObservers& observe
   run.column_height = scene.cylinder.height;
   run.column_width = scene.cylinder.diameter;
   run.particle_density = scene.sample.particle_density;
-  if (observers.instruments) run.results = observers.instruments->results();
+  run.simulated_count = double(scene.sample.simulated_count);
+  run.vector_figures = scene.output.vector_figures;
+  if (observers.instruments) {
+    run.results = observers.instruments->results();
+    const Suspension& s = observers.instruments->suspension();
+    run.homogeneous_density =
+        s.fluid.density + s.initial_concentration * (1 - s.fluid.density / s.particle_density);
+  }
   if (observers.columns) run.columns = observers.columns->states();
   return run;
 }

@@ -10,6 +10,7 @@
 
 #include "render/offscreen_view.h"
 #include "render/pixel_canvas.h"
+#include "render/plot.h"
 
 namespace sedem::render {
 namespace {
@@ -161,7 +162,13 @@ vtkSmartPointer<vtkImageData> render_mass_bands(const MassBandsFigure& f) {
                  double(c) * f.panel_width, double(rows - 1 - r) * f.panel_height);
   const double body_h = double(rows) * f.panel_height;
   draw_grey_scale(canvas, width - kScaleWidth + 16, 0.5 * body_h - 100, 200, full_scale);
-  if (title_h > 0) canvas.text(f.title, 0.5 * width, height - 0.5 * title_h, 18, true, true);
+  if (title_h > 0) {
+    auto prop = vtkSmartPointer<vtkTextProperty>::New();
+    prop->SetFontFamilyToArial();
+    prop->SetBold(true);
+    const int size = fitting_font_size(f.title, prop, width - 16, 18);
+    canvas.text(f.title, 0.5 * width, height - 0.5 * title_h, size, true, true);
+  }
 
   OffscreenView view(width, height);
   canvas.draw(view.renderer(), width, height);

@@ -1,6 +1,7 @@
 #include "render/paper_figures.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -51,8 +52,41 @@ PlotAxis time_axis() {
 PlotAxis diameter_axis(bool log = false) {
   return axis("diameter", "µm", log);
 }
+// Percent finer from 0 to 110 %: the whole curve with a margin above 100 %, never below 0.
 PlotAxis percent_finer_axis() {
-  return axis("percent finer", "%");
+  return axis("percent finer", "%", 0.0, 110.0);
+}
+
+// A grading curve of a few discrete sizes is a staircase: the percent finer jumps at each
+// size and stays flat between two sizes (0 below the smallest).
+constexpr std::size_t kStepCurveBelow = 30;
+void as_steps(PlotSeries& s) {
+  if (s.x.size() >= kStepCurveBelow || s.x.empty()) return;
+  std::vector<double> x, y;
+  double previous = 0;
+  for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
+    x.push_back(s.x[i]);
+    y.push_back(previous);
+    x.push_back(s.x[i]);
+    y.push_back(s.y[i]);
+    previous = s.y[i];
+  }
+  s.x = std::move(x);
+  s.y = std::move(y);
+}
+
+// Every curve (and band) inside the y axis with a margin, none on its limits; at least
+// 1 kg/m^3 (or unit) tall, so that tick labels never repeat.
+void fit_y_range(Plot& plot) {
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (const auto& series : plot.series)
+    for (const auto* v : {&series.y, &series.y_low})
+      for (double y : *v)
+        if (std::isfinite(y)) lo = std::min(lo, y), hi = std::max(hi, y);
+  if (lo <= hi) {
+    const double pad = std::max(0.08 * (hi - lo), 0.5);
+    plot.y.range = std::pair{lo - pad, hi + pad};
+  }
 }
 
 template <class Series, class Member>
@@ -109,19 +143,97 @@ Figure fig12_largest_diameter(const LargestDiameterInput& in) {
   return f;
 }
 
+int fig13_band_count(const SampleBulbDensity& s) {
+  double length = 0;
+  for (const auto& p : s.profiles)
+    for (double x : p.position_m) length = std::max(length, x);
+  if (s.simulated_count <= 0 || s.column_height_m <= 0) return 40;
+  const double along = s.simulated_count * length / s.column_height_m;
+  return std::clamp(int(along / kFig13GrainsPerBand), 2, 40);
+}
+
+namespace {
+
+// Dark blue for the first time to light blue for the last.
+std::array<unsigned char, 3> ramp_color(std::size_t i, std::size_t n) {
+  const double f = n > 1 ? double(i) / double(n - 1) : 0.0;
+  auto mix = [f](double a, double b) {
+    return static_cast<unsigned char>(std::lround(a + f * (b - a)));
+  };
+  return {mix(8, 120), mix(48, 190), mix(107, 230)};
+}
+
+// The band means of one profile and their standard errors, bands of equal length over
+// [0, length].
+struct BandProfile {
+  std::vector<double> centre, mean, low, high;
+};
+BandProfile band_means(const BulbDensityProfile& p, int bands, double length) {
+  std::vector<double> sum(std::size_t(bands), 0.0), sq(sum), count(sum);
+  const std::size_t n = std::min(p.position_m.size(), p.density_kg_m3.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const int k = std::clamp(int(p.position_m[i] / length * bands), 0, bands - 1);
+    sum[std::size_t(k)] += p.density_kg_m3[i];
+    sq[std::size_t(k)] += p.density_kg_m3[i] * p.density_kg_m3[i];
+    count[std::size_t(k)] += 1;
+  }
+  BandProfile out;
+  for (std::size_t k = 0; k < sum.size(); ++k) {
+    if (count[k] == 0) continue;
+    const double mean = sum[k] / count[k];
+    const double var =
+        count[k] > 1 ? std::max(0.0, (sq[k] - count[k] * mean * mean) / (count[k] - 1)) : 0.0;
+    const double se = std::sqrt(var / count[k]);
+    out.centre.push_back(100.0 * length * (double(k) + 0.5) / bands);  // cm
+    out.mean.push_back(mean);
+    out.low.push_back(mean - se);
+    out.high.push_back(mean + se);
+  }
+  return out;
+}
+
+}  // namespace
+
 Figure fig13_bulb_density(const std::vector<SampleBulbDensity>& samples) {
   std::vector<Plot> panels;
   for (const auto& s : samples) {
+    double length = 0;
+    for (const auto& p : s.profiles)
+      for (double x : p.position_m) length = std::max(length, x);
+    const int bands = fig13_band_count(s);
+    char unit[64];
+    std::snprintf(unit, sizeof unit, "cm; bands of %.2g cm", 100.0 * length / bands);
     Plot plot;
     plot.title = s.sample;
-    plot.x = axis("position along the bulb from its top", "cm");
-    plot.y = axis("suspension density", "kg/m3");
-    for (const auto& p : s.profiles)
-      plot.series.emplace_back(time_title(p.time_s), scaled(p.position_m, 100.0), p.density_kg_m3,
-                               SeriesStyle::line);
+    plot.x = axis("distance below the bulb's top", unit, 0.0, 100.0 * length);
+    plot.x.column = "position_along_the_bulb_cm";
+    plot.y = axis("suspension density", "kg/m³");
+    plot.legend_corner = LegendCorner::top_right;
+    if (s.homogeneous_kg_m3 > 0) {
+      char name[64];
+      std::snprintf(name, sizeof name, "t = 0 (homogeneous)");
+      PlotSeries t0(name, {0.0, 100.0 * length}, {s.homogeneous_kg_m3, s.homogeneous_kg_m3},
+                    SeriesStyle::dashed);
+      t0.color = kBlack;
+      plot.series.push_back(std::move(t0));
+    }
+    for (std::size_t i = 0; i < s.profiles.size(); ++i) {
+      const auto& p = s.profiles[i];
+      const auto b = band_means(p, bands, length > 0 ? length : 1.0);
+      const auto color = ramp_color(i, s.profiles.size());
+      PlotSeries spread(time_title(p.time_s) + " spread", b.centre, b.high, SeriesStyle::band);
+      spread.y_low = b.low;
+      spread.color = color;
+      plot.series.push_back(std::move(spread));
+      PlotSeries mean(time_title(p.time_s), b.centre, b.mean, SeriesStyle::line_and_points);
+      mean.color = color;
+      plot.series.push_back(std::move(mean));
+    }
+    fit_y_range(plot);
     panels.push_back(std::move(plot));
   }
-  return sample_grid("Suspension density along the hydrometer bulb", std::move(panels));
+  return sample_grid("Density along the bulb: band means, shaded \u00b1 one standard error",
+                     std::move(panels));
 }
 
 Figure fig14_bulb_average(const std::vector<BulbAverageSeries>& samples) {
@@ -130,11 +242,12 @@ Figure fig14_bulb_average(const std::vector<BulbAverageSeries>& samples) {
     Plot plot;
     plot.title = s.sample;
     plot.x = time_axis();
-    plot.y = axis("average density along the bulb", "kg/m3");
+    plot.y = axis("average density along the bulb", "kg/m³");
     PlotSeries eq19("Eq. 19", s.time_s, s.eq19_kg_m3, SeriesStyle::line);
     eq19.color = kBlack;
     plot.series.push_back(std::move(eq19));
     plot.series.emplace_back("simulation", s.time_s, s.simulated_kg_m3, SeriesStyle::points);
+    fit_y_range(plot);
     panels.push_back(std::move(plot));
   }
   return sample_grid("Bulb average density: simulation and Eq. 19", std::move(panels));
@@ -176,12 +289,13 @@ Figure fig18_granulometry(const std::vector<SampleGrading>& samples) {
     Plot plot;
     plot.title = s.sample;
     plot.x = axis("diameter", "µm", 1.0, 100.0, true);
-    plot.y = axis("percent finer", "%", 0.0, 110.0);
+    plot.y = percent_finer_axis();
     plot.legend_corner = LegendCorner::top_left;
     PlotSeries truth(s.truth.name.empty() ? "true" : s.truth.name, s.truth.diameter_m,
                      s.truth.percent_finer, SeriesStyle::line);
     truth.x = scaled(truth.x, 1e6);
     truth.color = kBlack;
+    as_steps(truth);
     plot.series.push_back(std::move(truth));
     for (std::size_t i = 0; i < s.tests.size(); ++i) {
       const auto color = palette_color(i);
@@ -201,26 +315,32 @@ Figure fig18_granulometry(const std::vector<SampleGrading>& samples) {
   return sample_grid("Grading curves: tests against the true distribution", std::move(panels));
 }
 
-void write_fig12(const LargestDiameterInput& input, const std::filesystem::path& dir) {
-  write_figure(fig12_largest_diameter(input), dir / kFig12Name);
+void write_fig12(const LargestDiameterInput& input, const std::filesystem::path& dir, bool svg) {
+  write_figure(fig12_largest_diameter(input), dir / kFig12Name, svg);
 }
-void write_fig13(const std::vector<SampleBulbDensity>& input, const std::filesystem::path& dir) {
-  write_figure(fig13_bulb_density(input), dir / kFig13Name);
+void write_fig13(const std::vector<SampleBulbDensity>& input, const std::filesystem::path& dir,
+                 bool svg) {
+  write_figure(fig13_bulb_density(input), dir / kFig13Name, svg);
 }
-void write_fig14(const std::vector<BulbAverageSeries>& input, const std::filesystem::path& dir) {
-  write_figure(fig14_bulb_average(input), dir / kFig14Name);
+void write_fig14(const std::vector<BulbAverageSeries>& input, const std::filesystem::path& dir,
+                 bool svg) {
+  write_figure(fig14_bulb_average(input), dir / kFig14Name, svg);
 }
-void write_fig15(const std::vector<HydrometerSeries>& input, const std::filesystem::path& dir) {
-  write_figure(fig15_hydrometer(input), dir / kFig15Name);
+void write_fig15(const std::vector<HydrometerSeries>& input, const std::filesystem::path& dir,
+                 bool svg) {
+  write_figure(fig15_hydrometer(input), dir / kFig15Name, svg);
 }
-void write_fig16(const std::vector<BuoyancySeries>& input, const std::filesystem::path& dir) {
-  write_figure(fig16_buoyancy(input), dir / kFig16Name);
+void write_fig16(const std::vector<BuoyancySeries>& input, const std::filesystem::path& dir,
+                 bool svg) {
+  write_figure(fig16_buoyancy(input), dir / kFig16Name, svg);
 }
-void write_fig17(const std::vector<PipetteSeries>& input, const std::filesystem::path& dir) {
-  write_figure(fig17_pipette(input), dir / kFig17Name);
+void write_fig17(const std::vector<PipetteSeries>& input, const std::filesystem::path& dir,
+                 bool svg) {
+  write_figure(fig17_pipette(input), dir / kFig17Name, svg);
 }
-void write_fig18(const std::vector<SampleGrading>& input, const std::filesystem::path& dir) {
-  write_figure(fig18_granulometry(input), dir / kFig18Name);
+void write_fig18(const std::vector<SampleGrading>& input, const std::filesystem::path& dir,
+                 bool svg) {
+  write_figure(fig18_granulometry(input), dir / kFig18Name, svg);
 }
 
 }  // namespace sedem::render

@@ -12,7 +12,8 @@ namespace sedem::render {
 
 // The paper's Figs. 12-18 as recipes: plain inputs in SI units (filled from the fields and
 // the instruments' results), a Figure out (plots in user-facing units: µm, cm, g, s).
-// write_figNN(input, dir) writes dir/<name>.png and dir/<name>.csv; docs/figures.md lists
+// write_figNN(input, dir, svg) writes dir/<name>.png and dir/<name>.csv (and with svg
+// dir/<name>.svg); docs/figures.md lists
 // the CSV columns.
 
 // Fig. 12: the largest diameter still above each depth (from the particles) against the
@@ -35,7 +36,13 @@ struct LargestDiameterInput {
 Figure fig12_largest_diameter(const LargestDiameterInput& input);
 
 // Fig. 13: suspension density along the hydrometer's bulb, one panel per sample, one curve
-// per time.
+// per time on a dark-to-light ramp. The raw layers (thousands, most holding no simulated
+// grain at the counts people run) are averaged over bands along the bulb whose width follows
+// from the particle count: about kFig13GrainsPerBand simulated grains per band in the
+// homogeneous suspension, between 2 and 40 bands, the width printed on the x axis. The
+// sampling spread of each band's mean (its standard error over the band's layers) is drawn
+// as a translucent band around the curve. The homogeneous suspension at t = 0 is drawn as a
+// black dashed line.
 struct BulbDensityProfile {
   double time_s = 0;
   std::vector<double> position_m;  // along the bulb, 0 at its top, 0.14 at its tip
@@ -44,7 +51,13 @@ struct BulbDensityProfile {
 struct SampleBulbDensity {
   std::string sample;
   std::vector<BulbDensityProfile> profiles;
+  double simulated_count = 0;      // simulated particles in the column; 0: 40 bands
+  double column_height_m = 0.457;  // to know how many of them the bulb spans
+  double homogeneous_kg_m3 = 0;    // the suspension at t = 0; 0: not drawn
 };
+inline constexpr double kFig13GrainsPerBand = 25;
+// The number of bands Fig. 13 averages a sample over.
+int fig13_band_count(const SampleBulbDensity& sample);
 Figure fig13_bulb_density(const std::vector<SampleBulbDensity>& samples);
 
 // Fig. 14: the density averaged along the bulb (from the layers) against Eq. 19 (from the
@@ -111,12 +124,19 @@ inline constexpr const char* kFig16Name = "fig16_buoyancy";
 inline constexpr const char* kFig17Name = "fig17_pipette";
 inline constexpr const char* kFig18Name = "fig18_granulometry";
 
-void write_fig12(const LargestDiameterInput& input, const std::filesystem::path& dir);
-void write_fig13(const std::vector<SampleBulbDensity>& input, const std::filesystem::path& dir);
-void write_fig14(const std::vector<BulbAverageSeries>& input, const std::filesystem::path& dir);
-void write_fig15(const std::vector<HydrometerSeries>& input, const std::filesystem::path& dir);
-void write_fig16(const std::vector<BuoyancySeries>& input, const std::filesystem::path& dir);
-void write_fig17(const std::vector<PipetteSeries>& input, const std::filesystem::path& dir);
-void write_fig18(const std::vector<SampleGrading>& input, const std::filesystem::path& dir);
+void write_fig12(const LargestDiameterInput& input, const std::filesystem::path& dir,
+                 bool svg = false);
+void write_fig13(const std::vector<SampleBulbDensity>& input, const std::filesystem::path& dir,
+                 bool svg = false);
+void write_fig14(const std::vector<BulbAverageSeries>& input, const std::filesystem::path& dir,
+                 bool svg = false);
+void write_fig15(const std::vector<HydrometerSeries>& input, const std::filesystem::path& dir,
+                 bool svg = false);
+void write_fig16(const std::vector<BuoyancySeries>& input, const std::filesystem::path& dir,
+                 bool svg = false);
+void write_fig17(const std::vector<PipetteSeries>& input, const std::filesystem::path& dir,
+                 bool svg = false);
+void write_fig18(const std::vector<SampleGrading>& input, const std::filesystem::path& dir,
+                 bool svg = false);
 
 }  // namespace sedem::render

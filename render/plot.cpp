@@ -16,10 +16,13 @@
 #include <vtkDoubleArray.h>
 #include <vtkPen.h>
 #include <vtkPlot.h>
+#include <vtkPlotArea.h>
 #include <vtkPlotPoints.h>
+#include <vtkSVGExporter.h>
 #include <vtkTable.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <vtkTextRenderer.h>
 
 #include "render/offscreen_view.h"
 
@@ -39,6 +42,8 @@ std::string identifier(const std::string& text) {
       continue;  // lead byte of µ (U+00B5) or μ (U+03BC) in UTF-8
     } else if (c == 0xB5 || c == 0xBC) {
       out += 'u';
+    } else if (c == 0xB3) {
+      out += '3';  // ³ (U+00B3), as in kg/m³
     } else if (!out.empty() && out.back() != '_') {
       out += '_';
     }
@@ -106,6 +111,21 @@ vtkSmartPointer<vtkTable> series_table(const PlotSeries& s, bool log_x, bool log
   return table;
 }
 
+// A band's table: x, its lower and upper edges.
+vtkSmartPointer<vtkTable> band_table(const PlotSeries& s) {
+  auto table = vtkSmartPointer<vtkTable>::New();
+  const char* names[] = {"x", "low", "high"};
+  const std::vector<double>* values[] = {&s.x, &s.y_low, &s.y};
+  const std::size_t n = std::min({s.x.size(), s.y.size(), s.y_low.size()});
+  for (int c = 0; c < 3; ++c) {
+    auto a = vtkSmartPointer<vtkDoubleArray>::New();
+    a->SetName(names[c]);
+    for (std::size_t i = 0; i < n; ++i) a->InsertNextValue((*values[c])[i]);
+    table->AddColumn(a);
+  }
+  return table;
+}
+
 vtkSmartPointer<vtkChartXY> make_chart(const Plot& plot,
                                        const std::map<std::string, std::size_t>& colors) {
   auto chart = vtkSmartPointer<vtkChartXY>::New();
@@ -117,6 +137,17 @@ vtkSmartPointer<vtkChartXY> make_chart(const Plot& plot,
   style_axis(chart->GetAxis(vtkAxis::BOTTOM), plot.x, plot, true);
   style_axis(chart->GetAxis(vtkAxis::LEFT), plot.y, plot, false);
   for (const auto& s : plot.series) {
+    if (s.style == SeriesStyle::band) {
+      vtkPlot* area = chart->AddPlot(vtkChart::AREA);
+      area->SetInputData(band_table(s));
+      area->SetInputArray(0, "x");
+      area->SetInputArray(1, "low");
+      area->SetInputArray(2, "high");
+      const auto rgb = s.color ? *s.color : palette_color(colors.at(s.name));
+      area->SetColor(rgb[0], rgb[1], rgb[2], 70);
+      area->SetLegendVisibility(false);
+      continue;
+    }
     // A line needs two points; a series of one is drawn as a marker.
     const bool points = s.style == SeriesStyle::points || s.x.size() < 2;
     vtkPlot* p = chart->AddPlot(points ? vtkChart::POINTS : vtkChart::LINE);
@@ -148,6 +179,22 @@ vtkSmartPointer<vtkChartXY> make_chart(const Plot& plot,
   chart->GetLegend()->SetVerticalAlignment(top ? vtkChartLegend::TOP : vtkChartLegend::BOTTOM);
   return chart;
 }
+
+}  // namespace
+
+int fitting_font_size(const std::string& text, vtkTextProperty* prop, int width, int largest) {
+  auto* renderer = vtkTextRenderer::GetInstance();
+  int size = largest;
+  for (; size > 8; --size) {
+    prop->SetFontSize(size);
+    int bbox[4];
+    if (!renderer || !renderer->GetBoundingBox(prop, text, bbox, 72)) break;
+    if (bbox[1] - bbox[0] <= width) break;
+  }
+  return size;
+}
+
+namespace {
 
 std::string csv_field(const std::string& text) {
   if (text.find_first_of(",\"\n") == std::string::npos) return text;
@@ -208,15 +255,51 @@ Figure single_plot(Plot plot, int width, int height) {
   return f;
 }
 
-vtkSmartPointer<vtkImageData> render_figure(const Figure& figure) {
-  if (figure.panels.empty()) throw std::invalid_argument("a figure needs at least one panel");
+namespace {
+
+// Draws `figure` into `view` (created by the caller at figure_size(figure)).
+void draw_figure(const Figure& figure, OffscreenView& view);
+
+std::pair<int, int> figure_size(const Figure& figure) {
   const int columns = std::clamp(figure.columns, 1, int(figure.panels.size()));
   const int rows = (int(figure.panels.size()) + columns - 1) / columns;
   const int title_h = figure.title.empty() ? 0 : kTitleHeight;
-  const int width = columns * figure.panel_width;
-  const int height = rows * figure.panel_height + title_h;
+  return {columns * figure.panel_width, rows * figure.panel_height + title_h};
+}
 
+}  // namespace
+
+vtkSmartPointer<vtkImageData> render_figure(const Figure& figure) {
+  if (figure.panels.empty()) throw std::invalid_argument("a figure needs at least one panel");
+  const auto [width, height] = figure_size(figure);
   OffscreenView view(width, height);
+  draw_figure(figure, view);
+  return view.capture();
+}
+
+void write_figure_svg(const Figure& figure, const std::filesystem::path& file) {
+  if (figure.panels.empty()) throw std::invalid_argument("a figure needs at least one panel");
+  const auto [width, height] = figure_size(figure);
+  OffscreenView view(width, height);
+  draw_figure(figure, view);
+  view.capture();  // lays the charts out
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  auto exporter = vtkSmartPointer<vtkSVGExporter>::New();
+  exporter->SetRenderWindow(view.window());
+  exporter->SetFileName(file.c_str());
+  exporter->SetTitle(figure.title.c_str());
+  exporter->SetTextAsPath(false);
+  exporter->Write();
+  if (!std::filesystem::exists(file)) throw std::runtime_error("cannot write " + file.string());
+}
+
+namespace {
+
+void draw_figure(const Figure& figure, OffscreenView& view) {
+  const int columns = std::clamp(figure.columns, 1, int(figure.panels.size()));
+  const int rows = (int(figure.panels.size()) + columns - 1) / columns;
+  const int title_h = figure.title.empty() ? 0 : kTitleHeight;
+  const auto [width, height] = figure_size(figure);
   auto actor = vtkSmartPointer<vtkContextActor>::New();
   const auto colors = name_indices(figure);
   for (std::size_t i = 0; i < figure.panels.size(); ++i) {
@@ -234,16 +317,17 @@ vtkSmartPointer<vtkImageData> render_figure(const Figure& figure) {
     text->SetInput(figure.title.c_str());
     auto* prop = text->GetTextProperty();
     prop->SetFontFamilyToArial();
-    prop->SetFontSize(18);
     prop->SetBold(true);
     prop->SetColor(0, 0, 0);
     prop->SetJustificationToCentered();
     prop->SetVerticalJustificationToCentered();
+    prop->SetFontSize(fitting_font_size(figure.title, prop, width - 16, 18));
     text->SetDisplayPosition(width / 2, height - title_h / 2);
     view.renderer()->AddActor2D(text);
   }
-  return view.capture();
 }
+
+}  // namespace
 
 void write_figure_csv(const Figure& figure, const std::filesystem::path& file) {
   std::vector<std::string> header;
@@ -254,7 +338,12 @@ void write_figure_csv(const Figure& figure, const std::filesystem::path& file) {
     for (const auto& s : panel.series) {
       header.push_back(pre + s.name + ":" + panel.x.column_name());
       columns.push_back(&s.x);
-      header.push_back(pre + s.name + ":" + panel.y.column_name());
+      const bool band = s.style == SeriesStyle::band;
+      if (band) {
+        header.push_back(pre + s.name + ":" + panel.y.column_name() + "_low");
+        columns.push_back(&s.y_low);
+      }
+      header.push_back(pre + s.name + ":" + panel.y.column_name() + (band ? "_high" : ""));
       columns.push_back(&s.y);
     }
   }
@@ -278,12 +367,14 @@ void write_figure_csv(const Figure& figure, const std::filesystem::path& file) {
   if (!out) throw std::runtime_error("cannot write " + file.string());
 }
 
-void write_figure(const Figure& figure, const std::filesystem::path& base) {
-  auto png = base, csv = base;
+void write_figure(const Figure& figure, const std::filesystem::path& base, bool svg) {
+  auto png = base, csv = base, vector = base;
   png += ".png";
   csv += ".csv";
+  vector += ".svg";
   write_png(render_figure(figure), png);
   write_figure_csv(figure, csv);
+  if (svg) write_figure_svg(figure, vector);
 }
 
 }  // namespace sedem::render

@@ -9,13 +9,15 @@
 
 #include <vtkImageData.h>
 #include <vtkSmartPointer.h>
+#include <vtkTextProperty.h>
 
 namespace sedem::render {
 
 // A generic 2D plot described by plain data, drawn offscreen with VTK's charts and written
 // with the same numbers as CSV, so every picture can be replotted elsewhere.
 
-enum class SeriesStyle { line, dashed, points, line_and_points };
+// band: a filled area between `y_low` and `y` (a spread), translucent, not in the legend.
+enum class SeriesStyle { line, dashed, points, line_and_points, band };
 
 struct PlotAxis {
   std::string quantity;  // shown on the axis as "quantity (unit)"
@@ -39,6 +41,7 @@ struct PlotSeries {
 
   std::string name;  // legend entry
   std::vector<double> x, y;
+  std::vector<double> y_low;  // SeriesStyle::band only: the band's lower edge
   SeriesStyle style = SeriesStyle::line;
   // RGB; when unset the colour follows the series' name, so one name has one colour in
   // every panel of a figure.
@@ -75,8 +78,16 @@ vtkSmartPointer<vtkImageData> render_figure(const Figure& figure);
 // cells empty. Numbers with 9 significant digits.
 void write_figure_csv(const Figure& figure, const std::filesystem::path& file);
 
-// Writes `<base>.png` and `<base>.csv`.
-void write_figure(const Figure& figure, const std::filesystem::path& base);
+// The same figure as SVG, through VTK's vtkSVGExporter: lines, markers, areas and text as
+// vector graphics, for papers.
+void write_figure_svg(const Figure& figure, const std::filesystem::path& file);
+
+// Writes `<base>.png` and `<base>.csv`, and with `svg` `<base>.svg`.
+void write_figure(const Figure& figure, const std::filesystem::path& base, bool svg = false);
+
+// The largest font size, at most `largest`, at which `text` in `prop`'s font fits in `width`
+// pixels (at least 8). Sets `prop`'s size as it tries.
+int fitting_font_size(const std::string& text, vtkTextProperty* prop, int width, int largest);
 
 // The colour given to the i-th distinct series name (a fixed, colour-blind friendly list).
 std::array<unsigned char, 3> palette_color(std::size_t i);

@@ -1,7 +1,13 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages sedem needs to build, test and render with no display.
+# Installs the Debian 12 packages sedem needs to build, test and render with no display, and
+# unpacks ParaView 5.11 into .paraview/ for the tests that open sedem's files with pvpython.
 # Idempotent: when everything is present it makes no apt call at all. Run as root (or with
 # sudo available).
+#
+# Debian's paraview package cannot be installed beside libvtk9-dev (installing it removes the
+# build's VTK), so its two .debs are downloaded and unpacked with dpkg -x into a private
+# folder (SEDEM_PARAVIEW_DIR, default .paraview/ at the repository's root): the installed
+# packages are never changed by that step. tests/render/pvpython.sh runs that pvpython.
 set -euo pipefail
 
 packages=(
@@ -11,7 +17,17 @@ packages=(
   libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev libglew-dev
   libgtest-dev googletest clang-format
   python3 python3-numpy python3-vtk9 python3-matplotlib python3-pytest
+  # ParaView's pvpython (unpacked below): its libraries' dependencies, and an X server for
+  # its rendering (Debian's ParaView renders through X only).
+  xvfb xauth libqt5help5 libqt5opengl5 libqt5widgets5 libqt5network5 libqt5gui5
+  libavcodec59 libavformat59 libswscale6 libdouble-conversion3 libgdal32 libgl2ps1.4
+  libglew2.2 libhdf5-openmpi-103-1 libnetcdf19 libopenmpi3 libtheora0 libpython3.11
+  libopengl0 libxcursor1  python3-mpi4py python3-six
 )
+
+cd "$(dirname "$0")/.."
+paraview_dir=${SEDEM_PARAVIEW_DIR:-$PWD/.paraview}
+paraview_debs=(paraview python3-paraview)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -19,17 +35,39 @@ for p in "${packages[@]}"; do
   [[ "$status" == "install ok installed" ]] || missing+=("$p")
 done
 
-if ((${#missing[@]} == 0)); then
-  echo "setup: all ${#packages[@]} packages present"
+have_paraview=false
+[[ -x "$paraview_dir/usr/bin/pvpython" ]] && have_paraview=true
+
+if ((${#missing[@]} == 0)) && [[ $have_paraview == true ]]; then
+  echo "setup: all ${#packages[@]} packages present, ParaView in $paraview_dir"
   exit 0
 fi
 
-echo "setup: installing ${missing[*]}"
 sudo_cmd=()
 if [[ $(id -u) -ne 0 ]]; then
   command -v sudo >/dev/null || { echo "setup: run as root or install sudo" >&2; exit 1; }
   sudo_cmd=(sudo)
 fi
 export DEBIAN_FRONTEND=noninteractive
-"${sudo_cmd[@]}" apt-get update -q
-"${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+updated=false
+if ((${#missing[@]} > 0)); then
+  echo "setup: installing ${missing[*]}"
+  "${sudo_cmd[@]}" apt-get update -q
+  updated=true
+  "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+if [[ $have_paraview == false ]]; then
+  echo "setup: unpacking ParaView (${paraview_debs[*]}) into $paraview_dir"
+  download=$(mktemp -d)
+  chmod 777 "$download"  # apt's download user writes there
+  if ! (cd "$download" && apt-get download -q "${paraview_debs[@]}"); then
+    [[ $updated == true ]] || "${sudo_cmd[@]}" apt-get update -q
+    (cd "$download" && apt-get download -q "${paraview_debs[@]}")
+  fi
+  rm -rf "$paraview_dir.tmp"
+  mkdir -p "$paraview_dir.tmp"
+  for deb in "$download"/*.deb; do dpkg -x "$deb" "$paraview_dir.tmp"; done
+  rm -rf "$download" "$paraview_dir"
+  mv "$paraview_dir.tmp" "$paraview_dir"
+fi

@@ -32,6 +32,7 @@ class InstrumentObserver : public Observer {
   // The readings taken so far against the reference at the same times.
   TestResults results() const;
   const HydrometerGeometry& hydrometer() const { return panel_.hydrometer(); }
+  const Suspension& suspension() const { return panel_.suspension(); }
 
  private:
   Scene scene_;

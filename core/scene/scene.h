@@ -16,10 +16,11 @@ namespace sedem {
 
 // What to write and when.
 struct OutputConfig {
-  double interval = 10.0;  // s between snapshots (particles, fields, frames)
-  bool particles = true;   // particles.pvd series
-  bool frames = true;      // PNG of the column per snapshot
-  bool fields = true;      // fields.pvd: layer density and concentration per snapshot
+  double interval = 10.0;       // s between snapshots (particles, fields, frames)
+  bool particles = true;        // particles.pvd series
+  bool frames = true;           // PNG of the column per snapshot
+  bool fields = true;           // fields.pvd: layer density and concentration per snapshot
+  bool vector_figures = false;  // figures also as SVG
   std::int64_t frame_width = 300;
   std::int64_t frame_height = 720;
 };

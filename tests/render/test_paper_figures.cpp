@@ -79,27 +79,67 @@ TEST(PaperFigures, Fig12Eq16CurveIsTheLimitingDiameter) {
   expect_matches(f, "fig12.png");
 }
 
-TEST(PaperFigures, Fig13BulbDensity) {
+// Raw layers as a run of a few thousand particles gives them: 1225 layers along the bulb,
+// most with no simulated grain (water, 1000 kg/m^3), a few with one (a spike).
+std::vector<render::SampleBulbDensity> sparse_bulb_input() {
   std::vector<render::SampleBulbDensity> in;
   for (int k = 1; k <= 2; ++k) {
-    render::SampleBulbDensity s{"sample " + std::to_string(k), {}};
-    for (double t : {0.0, 60.0, 300.0, 900.0}) {
+    render::SampleBulbDensity s{"sample " + std::to_string(k), {}, 1500.0 * k, 0.457, 1030.0};
+    for (double t : {0.0, 120.0, 900.0}) {
       render::BulbDensityProfile p;
       p.time_s = t;
-      for (int i = 0; i <= 14; ++i) {
-        const double h = 0.01 * i;
+      const double mean_excess = 30.0 * std::exp(-t / (600.0 * k));
+      for (int i = 0; i < 1225; ++i) {
+        const double h = 0.14 * (i + 0.5) / 1225;
+        // Every 25th layer holds a grain, heavier further down the bulb as time goes on.
+        const double tilt = 1 + (h / 0.14 - 0.5) * t / 900;
         p.position_m.push_back(h);
-        p.density_kg_m3.push_back(1000 + 15 * std::exp(-t / (300.0 * k)) * (1 + 2 * h * t / 900));
+        p.density_kg_m3.push_back(1000 + (i % 25 == 7 ? 25 * mean_excess * tilt : 0.0));
       }
       s.profiles.push_back(p);
     }
     in.push_back(s);
   }
+  return in;
+}
+
+TEST(PaperFigures, Fig13AveragesOverBandsThatFollowTheParticleCount) {
+  const auto in = sparse_bulb_input();
+  // 1500 particles in 45.7 cm: 460 along the 14 cm bulb, 18 bands of about 25.
+  EXPECT_EQ(render::fig13_band_count(in[0]), 18);
+  EXPECT_EQ(render::fig13_band_count(in[1]), 36);
+  auto many = in[0];
+  many.simulated_count = 30000;
+  EXPECT_EQ(render::fig13_band_count(many), 40);
+
   const auto f = render::fig13_bulb_density(in);
   ASSERT_EQ(f.panels.size(), 2u);
-  EXPECT_EQ(f.panels[0].series.size(), 4u);
-  EXPECT_DOUBLE_EQ(f.panels[0].series[0].x.back(), 14.0);  // cm
-  EXPECT_EQ(f.panels[0].x.unit, "cm");
+  const auto& panel = f.panels[0];
+  EXPECT_EQ(panel.y.unit, "kg/m³");
+  EXPECT_EQ(panel.y.column_name(), "suspension_density_kg_m3");
+  EXPECT_EQ(panel.x.title(), "distance below the bulb's top (cm; bands of 0.78 cm)");
+  // t = 0 first (homogeneous, dashed, black), then per time a spread band and its means.
+  ASSERT_EQ(panel.series.size(), 1u + 2u * 3u);
+  EXPECT_EQ(panel.series[0].name, "t = 0 (homogeneous)");
+  EXPECT_DOUBLE_EQ(panel.series[0].y[0], 1030.0);
+  const auto& spread = panel.series[1];
+  const auto& t0 = panel.series[2];
+  EXPECT_EQ(spread.style, render::SeriesStyle::band);
+  ASSERT_TRUE(panel.y.range.has_value());
+  EXPECT_LT(panel.y.range->first, 1000.0);  // t = 900 s spread
+  EXPECT_GT(panel.y.range->second, 1050.0);
+  EXPECT_EQ(t0.name, "t = 0 s");
+  ASSERT_EQ(t0.y.size(), 18u);
+  // The band means of the t = 0 profile sit at the homogeneous density, within the spread.
+  for (std::size_t k = 0; k < t0.y.size(); ++k) {
+    EXPECT_LE(std::abs(t0.y[k] - 1030.0), 2 * (spread.y[k] - t0.y[k])) << k;
+    EXPECT_LE(spread.y_low[k], t0.y[k]);
+    EXPECT_GE(spread.y[k], t0.y[k]);
+    EXPECT_GT(spread.y[k], spread.y_low[k]);  // sampling leaves a spread
+  }
+  // One colour per time, from dark to light.
+  EXPECT_EQ(spread.color, t0.color);
+  EXPECT_NE(panel.series[2].color, panel.series[4].color);
   expect_matches(f, "fig13.png");
 }
 
@@ -115,6 +155,10 @@ TEST(PaperFigures, Fig14BulbAverage) {
   ASSERT_EQ(f.panels.size(), 1u);
   EXPECT_TRUE(f.panels[0].x.log);
   EXPECT_EQ(f.panels[0].series[0].name, "Eq. 19");
+  // No point on the axis limits: a margin around the data.
+  ASSERT_TRUE(f.panels[0].y.range.has_value());
+  EXPECT_LT(f.panels[0].y.range->first, 1000.0);
+  EXPECT_GT(f.panels[0].y.range->second, 1016.0);
   expect_matches(f, "fig14.png");
 }
 
@@ -167,7 +211,22 @@ TEST(PaperFigures, Fig17Pipette) {
   }
   const auto f = render::fig17_pipette(in);
   ASSERT_EQ(f.panels.size(), 2u);
+  // Percent axes from 0 to 110 %, not from below zero.
+  ASSERT_TRUE(f.panels[1].y.range.has_value());
+  EXPECT_DOUBLE_EQ(f.panels[1].y.range->first, 0.0);
+  EXPECT_DOUBLE_EQ(f.panels[1].y.range->second, 110.0);
   expect_matches(f, "fig17.png");
+}
+
+TEST(PaperFigures, Fig18DrawsDiscreteSizesAsSteps) {
+  // The demo: half the mass at 10 µm, half at 60 µm.
+  render::SampleGrading g;
+  g.sample = "demo";
+  g.truth = {"true", {10e-6, 60e-6}, {50.0, 100.0}};
+  const auto f = render::fig18_granulometry({g});
+  const auto& truth = f.panels[0].series[0];
+  EXPECT_EQ(truth.x, (std::vector<double>{10.0, 10.0, 60.0, 60.0}));
+  EXPECT_EQ(truth.y, (std::vector<double>{0.0, 50.0, 50.0, 100.0}));
 }
 
 TEST(PaperFigures, Fig18GradingOnALogDiameterAxis) {

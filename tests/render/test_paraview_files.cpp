@@ -10,16 +10,18 @@
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkIdList.h>
-#include <vtkImageData.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkTriangleFilter.h>
-#include <vtkXMLImageDataReader.h>
 #include <vtkXMLPolyDataReader.h>
+
+#include <nlohmann/json.hpp>
 
 #include "render/field_writer.h"
 #include "render/hydrometer_writer.h"
+#include "render/image_compare.h"
+#include "render/offscreen_view.h"
 #include "render/particle_writer.h"
 #include "render_test_support.h"
 
@@ -78,47 +80,70 @@ render::LayerFields layers(double time) {
   return f;
 }
 
-TEST(ParaviewFiles, FieldsAreLayerImagesWithTheSurfaceOnTop) {
+TEST(ParaviewFiles, FieldsAreAStripWithPointDataAlongDepth) {
   const auto dir = test::output_dir() / "pv_fields";
   std::filesystem::remove_all(dir);
   render::FieldSeriesWriter writer(dir);
   writer.write(layers(0.0));
   const auto file = writer.write(layers(30.0));
   expect_series(dir / "fields.pvd", {0.0, 30.0});
-  EXPECT_EQ(file, dir / "fields/fields_000001.vti");
+  EXPECT_EQ(file, dir / "fields/fields_000001.vtp");
   expect_raw_compressed(file);
 
-  auto reader = vtkSmartPointer<vtkXMLImageDataReader>::New();
+  auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
   reader->SetFileName(file.c_str());
   reader->Update();
-  vtkImageData* image = reader->GetOutput();
-  int dims[3];
-  image->GetDimensions(dims);
-  EXPECT_EQ(dims[0], 2);
-  EXPECT_EQ(dims[1], 9);
-  EXPECT_EQ(dims[2], 1);
-  EXPECT_EQ(image->GetNumberOfCells(), 8);
+  vtkPolyData* strip = reader->GetOutput();
+  EXPECT_EQ(strip->GetNumberOfPoints(), 16);  // two per layer
+  EXPECT_EQ(strip->GetNumberOfPolys(), 7);
   double bounds[6];
-  image->GetBounds(bounds);
+  strip->GetBounds(bounds);
   EXPECT_NEAR(bounds[0], -0.03, 1e-15);
   EXPECT_NEAR(bounds[1], 0.03, 1e-15);
-  EXPECT_NEAR(bounds[3], 0.4, 1e-15);
-  auto* cd = image->GetCellData();
-  for (const char* name : {"suspension_density", "concentration", "depth", "volume_fraction"})
-    ASSERT_NE(cd->GetArray(name), nullptr) << name;
-  // The top cell (highest y) is the first layer below the free surface.
-  EXPECT_DOUBLE_EQ(cd->GetArray("concentration")->GetTuple1(7), 30.0);
-  EXPECT_DOUBLE_EQ(cd->GetArray("concentration")->GetTuple1(0), 100.0);
-  EXPECT_NEAR(cd->GetArray("depth")->GetTuple1(7), 0.025, 1e-15);
-  EXPECT_NEAR(cd->GetArray("depth")->GetTuple1(0), 0.375, 1e-15);
-  EXPECT_DOUBLE_EQ(cd->GetArray("suspension_density")->GetTuple1(0), 1060.0);
-  EXPECT_DOUBLE_EQ(image->GetFieldData()->GetArray("TimeValue")->GetTuple1(0), 30.0);
+  EXPECT_NEAR(bounds[2], 0.025, 1e-15);  // the lowest layer's centre
+  EXPECT_NEAR(bounds[3], 0.375, 1e-15);  // the top layer's centre
+  EXPECT_LT(bounds[5], 0.0);             // behind the particles
+  auto* pd = strip->GetPointData();
+  EXPECT_EQ(strip->GetCellData()->GetNumberOfArrays(), 0);
+  ASSERT_NE(pd->GetScalars(), nullptr);
+  EXPECT_STREQ(pd->GetScalars()->GetName(), "suspension_density");
+  for (const char* name :
+       {"suspension_density", "concentration", "solid_fraction", "depth", "bed", "volume_fraction"})
+    ASSERT_NE(pd->GetArray(name), nullptr) << name;
+  // Points 2j and 2j + 1 are layer j from the free surface, at its centre's height.
+  EXPECT_DOUBLE_EQ(pd->GetArray("concentration")->GetTuple1(0), 30.0);
+  EXPECT_DOUBLE_EQ(pd->GetArray("concentration")->GetTuple1(15), 100.0);
+  EXPECT_NEAR(pd->GetArray("depth")->GetTuple1(1), 0.025, 1e-15);
+  EXPECT_NEAR(strip->GetPoint(1)[1], 0.375, 1e-15);
+  EXPECT_NEAR(pd->GetArray("depth")->GetTuple1(14), 0.375, 1e-15);
+  EXPECT_DOUBLE_EQ(pd->GetArray("suspension_density")->GetTuple1(15), 1060.0);
+  EXPECT_DOUBLE_EQ(pd->GetArray("solid_fraction")->GetTuple1(15), 100.0 / 2500.0);
+  EXPECT_DOUBLE_EQ(strip->GetFieldData()->GetArray("TimeValue")->GetTuple1(0), 30.0);
+}
+
+TEST(ParaviewFiles, BedLayersAreClippedToAPackedBed) {
+  // The demo's bed at 120 s: 27 196 kg/m^3 of grains, a suspension of 17 317 kg/m^3.
+  auto f = layers(0.0);
+  f.concentration_kg_m3.back() = 27196;
+  f.suspension_density_kg_m3.back() = 17317;
+  auto strip = render::layer_strip(f);
+  auto* pd = strip->GetPointData();
+  const vtkIdType bed = 14, above = 12;
+  EXPECT_DOUBLE_EQ(pd->GetArray("solid_fraction")->GetTuple1(bed), render::kBedSolidFraction);
+  EXPECT_DOUBLE_EQ(pd->GetArray("concentration")->GetTuple1(bed), 0.64 * 2500);
+  EXPECT_DOUBLE_EQ(pd->GetArray("suspension_density")->GetTuple1(bed), 1000 + 0.64 * 1500);
+  EXPECT_EQ(pd->GetArray("bed")->GetTuple1(bed), 1);
+  EXPECT_EQ(pd->GetArray("bed")->GetTuple1(above), 0);
+  EXPECT_DOUBLE_EQ(pd->GetArray("concentration")->GetTuple1(above), 60.0);
+  double range[2];
+  pd->GetArray("suspension_density")->GetRange(range);
+  EXPECT_LE(range[1], 2500.0);  // never denser than the grains themselves
 }
 
 TEST(ParaviewFiles, FieldsRejectMismatchedLayers) {
   auto f = layers(0.0);
   f.concentration_kg_m3.pop_back();
-  EXPECT_THROW(render::layer_image(f), std::invalid_argument);
+  EXPECT_THROW(render::layer_strip(f), std::invalid_argument);
 }
 
 // Volume enclosed by a triangulated surface (divergence theorem): positive when the
@@ -154,6 +179,14 @@ TEST(ParaviewFiles, BulbSurfaceEnclosesTheProfileVolume) {
   EXPECT_DOUBLE_EQ(bounds[2], 0.25);  // tip
   EXPECT_NEAR(bounds[3], 0.35, 1e-15);
   EXPECT_NEAR(bounds[1], 0.01, 1e-15);
+  // The back half encloses half of it, lies behind the section's plane and carries the
+  // outline in that plane.
+  auto half = render::bulb_surface(profile, 0.25, n, render::BulbPart::back_half);
+  EXPECT_NEAR(signed_volume(half), 0.5 * polygon_area * (0.08 + 0.02 / 3.0), 1e-12);
+  half->GetBounds(bounds);
+  EXPECT_NEAR(bounds[5], 0.0, 1e-15);
+  EXPECT_NEAR(bounds[4], -0.01, 1e-15);
+  EXPECT_EQ(half->GetNumberOfLines(), 1);
 }
 
 TEST(ParaviewFiles, HydrometerSeriesPlacesTheTipAtItsDepth) {
@@ -172,6 +205,7 @@ TEST(ParaviewFiles, HydrometerSeriesPlacesTheTipAtItsDepth) {
   EXPECT_GT(poly->GetNumberOfPolys(), 0);
   double bounds[6];
   poly->GetBounds(bounds);
+  EXPECT_LE(bounds[5], 0.0);  // nothing in front of the particles' plane z = 0
   EXPECT_NEAR(bounds[2], 0.457 - 0.21, 1e-12);
   EXPECT_NEAR(bounds[3], 0.457 - 0.21 + 0.30, 1e-12);
   EXPECT_DOUBLE_EQ(poly->GetFieldData()->GetArray("tip_depth")->GetTuple1(0), 0.21);
@@ -181,34 +215,110 @@ TEST(ParaviewFiles, HydrometerSeriesPlacesTheTipAtItsDepth) {
 std::string run(const std::string& command) {
   std::string out;
   if (FILE* pipe = ::popen(command.c_str(), "r")) {
-    std::array<char, 512> buffer;
+    std::array<char, 4096> buffer;
     while (std::fgets(buffer.data(), int(buffer.size()), pipe)) out += buffer.data();
     ::pclose(pipe);
   }
   return out;
 }
 
-TEST(ParaviewFiles, ParaviewOpensTheParticleSeries) {
-  if (std::system("command -v pvpython > /dev/null 2>&1") != 0)
-    GTEST_SKIP() << "pvpython is not on PATH (ParaView is not installed): the series is not "
-                    "checked through ParaView here";
-  const auto dir = test::output_dir() / "pv_paraview";
+const std::filesystem::path kSource = SEDEM_SOURCE_DIR;
+
+// ParaView's own pvpython (unpacked by scripts/setup.sh) on `script` with `args`.
+std::string pvpython(const std::filesystem::path& script, const std::string& args) {
+  return run("'" + (kSource / "tests/render/pvpython.sh").string() + "' '" + script.string() +
+             "' " + args + " 2>&1");
+}
+
+// A small run folder written by sedem's own writers: 140 particles at 0, 10 and 20 s, the
+// layer fields at the same times (the bottom layers overfilled, as a bed is), and the
+// hydrometer at 10 and 20 s.
+std::filesystem::path write_run(const std::string& name) {
+  const auto dir = test::output_dir() / name;
   std::filesystem::remove_all(dir);
-  render::ParticleSeriesWriter writer(dir, 2500.0);
+  render::ParticleSeriesWriter particles(dir, 2500.0);
+  render::FieldSeriesWriter fields(dir);
+  render::HydrometerSeriesWriter bulb(dir, {{0.0, 0.02, 0.14, 0.30}, {0.0, 0.014, 0.014, 0.003}},
+                                      0.457);
   auto snap = test::lattice_snapshot();
   for (double t : {0.0, 10.0, 20.0}) {
     snap.time = t;
-    writer.write(snap);
+    particles.write(snap);
+    render::LayerFields f;
+    f.time_s = t;
+    for (int j = 0; j < 40; ++j) {
+      const double c = j < 36 ? 20.0 + j + t : 30000.0;  // kg/m^3
+      f.concentration_kg_m3.push_back(c);
+      f.suspension_density_kg_m3.push_back(1000 + 0.6 * c);
+    }
+    fields.write(f);
+    if (t > 0) bulb.write(t, 0.15 + 0.001 * t);
   }
-  const auto script =
-      std::filesystem::path(SEDEM_SOURCE_DIR) / "tests" / "render" / "check_particles_pvd.py";
-  const auto out = run("pvpython --force-offscreen-rendering '" + script.string() + "' '" +
-                       (dir / "particles.pvd").string() + "' 2>&1");
-  EXPECT_NE(out.find("times 0.0 10.0 20.0"), std::string::npos) << out;
-  EXPECT_NE(out.find("arrays diameter id mass radius size_class velocity weight"),
-            std::string::npos)
-      << out;
-  EXPECT_NE(out.find("points 140"), std::string::npos) << out;
+  return dir;
+}
+
+TEST(ParaviewFiles, ParaviewReadsEverySeriesAndShowsItWithNoFurtherStep) {
+  const auto dir = write_run("pv_paraview");
+  const auto out = pvpython(kSource / "tests/render/check_run_pvd.py", "'" + dir.string() + "'");
+  const auto at = out.find("REPORT {");
+  ASSERT_NE(at, std::string::npos) << "pvpython gave no report (run scripts/setup.sh):\n" << out;
+  const auto report = nlohmann::json::parse(out.substr(at + 7, out.find('\n', at) - at - 7));
+
+  const auto& p = report.at("particles");
+  EXPECT_EQ(p.at("times"), nlohmann::json::parse("[0.0, 10.0, 20.0]"));
+  EXPECT_EQ(p.at("class"), "vtkPolyData");
+  EXPECT_EQ(p.at("points"), 140);
+  EXPECT_EQ(p.at("cells"), 140);  // one vertex each: ParaView draws them as they are
+  const auto& pd = p.at("point_data");
+  for (const char* name : {"diameter", "radius", "velocity", "mass", "weight"})
+    EXPECT_EQ(pd.at(name).at("type"), "double") << name;
+  EXPECT_EQ(pd.at("size_class").at("type"), "int");
+  EXPECT_EQ(pd.at("id").at("type"), "unsigned int");
+  EXPECT_EQ(pd.at("velocity").at("components"), 3);
+  EXPECT_DOUBLE_EQ(pd.at("diameter").at("range")[0].get<double>(), 5e-6);
+  EXPECT_DOUBLE_EQ(pd.at("diameter").at("range")[1].get<double>(), 60e-6);
+  EXPECT_DOUBLE_EQ(pd.at("radius").at("range")[1].get<double>(), 30e-6);
+  EXPECT_DOUBLE_EQ(pd.at("id").at("range")[1].get<double>(), 139);
+  EXPECT_DOUBLE_EQ(p.at("field_data").at("TimeValue").at("range")[0].get<double>(), 20.0);
+  EXPECT_EQ(p.at("representation"), "Surface");
+  EXPECT_EQ(p.at("colour"), nlohmann::json::parse(R"(["POINTS", "diameter"])"));
+
+  // The fields draw as a coloured strip by default: point data, coloured by density.
+  const auto& f = report.at("fields");
+  EXPECT_EQ(f.at("times"), nlohmann::json::parse("[0.0, 10.0, 20.0]"));
+  EXPECT_EQ(f.at("class"), "vtkPolyData");
+  EXPECT_EQ(f.at("points"), 80);
+  EXPECT_EQ(f.at("cell_data").size(), 0u);
+  EXPECT_EQ(f.at("representation"), "Surface");
+  EXPECT_EQ(f.at("colour"), nlohmann::json::parse(R"(["POINTS", "suspension_density"])"));
+  const auto& fd = f.at("point_data");
+  for (const char* name : {"suspension_density", "concentration", "solid_fraction", "depth"})
+    EXPECT_EQ(fd.at(name).at("type"), "double") << name;
+  EXPECT_EQ(fd.at("bed").at("type"), "unsigned char");
+  // Physical at the bed: a packed bed, never denser than the grains.
+  EXPECT_DOUBLE_EQ(fd.at("suspension_density").at("range")[0].get<double>(), 1000 + 0.6 * 40);
+  EXPECT_DOUBLE_EQ(fd.at("suspension_density").at("range")[1].get<double>(), 1000 + 0.64 * 1500);
+  EXPECT_DOUBLE_EQ(fd.at("concentration").at("range")[1].get<double>(), 0.64 * 2500);
+  EXPECT_DOUBLE_EQ(fd.at("solid_fraction").at("range")[1].get<double>(), 0.64);
+  EXPECT_NEAR(fd.at("depth").at("range")[1].get<double>(), 0.457 * 79 / 80, 1e-12);
+
+  const auto& h = report.at("hydrometer");
+  EXPECT_EQ(h.at("times"), nlohmann::json::parse("[10.0, 20.0]"));
+  EXPECT_DOUBLE_EQ(h.at("field_data").at("tip_depth").at("range")[0].get<double>(), 0.17);
+  EXPECT_EQ(h.at("representation"), "Surface");
+}
+
+TEST(ParaviewFiles, TheStateMacroShowsARunAsThePaperDoes) {
+  const auto dir = write_run("pv_state");
+  const auto png = dir / "state.png";
+  const auto out = pvpython(kSource / "docs/sedem_paraview.py",
+                            "'" + dir.string() + "' --time 10 --screenshot '" + png.string() +
+                                "' --state '" + (dir / "sedem.pvsm").string() + "'");
+  ASSERT_TRUE(std::filesystem::exists(png)) << out;
+  EXPECT_TRUE(std::filesystem::exists(dir / "sedem.pvsm")) << out;
+  auto result = render::compare_with_baseline(
+      render::read_png(png), test::baseline("paraview_state.png"), test::output_dir(), 20.0);
+  EXPECT_TRUE(result.passed) << result.message;
 }
 
 }  // namespace

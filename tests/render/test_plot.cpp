@@ -103,5 +103,24 @@ TEST(Plot, CsvHoldsEverySeriesWithUnits) {
   EXPECT_EQ(last, "1000,0.6737947,,,1000,0.6737947,,");
 }
 
+TEST(Plot, SvgHoldsTheFigureAsVectorGraphics) {
+  render::Figure f = render::single_plot(sample_plot(), 560, 400);
+  f.title = "Settling in kg/m³";
+  const auto base = test::output_dir() / "plot_svg" / "figure";
+  std::filesystem::remove_all(base.parent_path());
+  render::write_figure(f, base, true);
+  auto svg = base;
+  svg += ".svg";
+  ASSERT_TRUE(std::filesystem::exists(svg));
+  const auto text = test::read_text(svg);
+  EXPECT_NE(text.find("<svg"), std::string::npos);
+  EXPECT_NE(text.find("Settling"), std::string::npos);       // the panel's title as text
+  EXPECT_NE(text.find("percent finer"), std::string::npos);  // an axis title
+  EXPECT_NE(text.find("<path"), std::string::npos);          // the curves as paths
+  auto png = base;
+  png += ".png";
+  EXPECT_TRUE(std::filesystem::exists(png));
+}
+
 }  // namespace
 }  // namespace sedem
