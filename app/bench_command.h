@@ -6,7 +6,7 @@
 namespace sedem::app {
 
 struct BenchOptions {
-  std::string which = "engine";   // engine | accuracy
+  std::string which = "engine";   // engine | accuracy | speedup | scale
   std::vector<std::string> args;  // passed on to the benchmark
 };
 

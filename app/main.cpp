@@ -162,10 +162,11 @@ int main(int argc, char** argv) {
   auto* bench_cmd = cli.add_subcommand(
       "bench",
       "Run a benchmark: engine (throughput, memory, stability), accuracy (run time "
-      "against error for every sample) or speedup (fast against reference integrator, side by "
-      "side); arguments after -- go to it");
-  bench_cmd->add_option("which", bench_options.which, "engine, accuracy or speedup")
-      ->check(CLI::IsMember({"engine", "accuracy", "speedup"}))
+      "against error for every sample), speedup (fast against reference integrator, side by "
+      "side) or scale (the whole test of every sample against particle count); arguments "
+      "after -- go to it");
+  bench_cmd->add_option("which", bench_options.which, "engine, accuracy, speedup or scale")
+      ->check(CLI::IsMember({"engine", "accuracy", "speedup", "scale"}))
       ->capture_default_str();
   bench_cmd->add_option("args", bench_options.args, "Arguments for the benchmark (after --)");
 

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_support.h"
 #include "core/observe/simulate.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
@@ -94,10 +95,7 @@ void plot(const std::vector<Row>& rows, const std::string& test, const fs::path&
 
 int main(int argc, char** argv) {
   CLI::App cli{"sedem accuracy benchmark: run time against error for every sample and test"};
-  const std::string root = SEDEM_SOURCE_DIR;
-  std::vector<std::string> scenes;
-  for (int k = 1; k <= 5; ++k)
-    scenes.push_back(root + "/scenes/sample" + std::to_string(k) + ".toml");
+  std::vector<std::string> scenes = bench::sample_scenes();
   std::vector<std::string> varies;
   std::vector<std::string> sets;
   std::string out = "bench-out";
@@ -113,9 +111,8 @@ int main(int argc, char** argv) {
                    : "sample.simulated_count=2000,8000,32000",
               "sample.weighting=equal_mass,uniform_count"};
   }
-  // No frames or files: the benchmark measures the simulation and the tests.
-  sets.insert(sets.begin(),
-              {"output.frames=false", "output.particles=false", "output.fields=false"});
+  const auto quiet = bench::no_output_keys();
+  sets.insert(sets.begin(), quiet.begin(), quiet.end());
 
   fs::create_directories(out);
   std::vector<Row> rows;

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_support.h"
 #include "core/observe/simulate.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
@@ -43,13 +44,6 @@ double readings_gap(const TestResults& a, const TestResults& b, const std::strin
     for (const auto& tb : b.granulometry.tests)
       if (ta.test == test && tb.test == test) gap = std::max(gap, curve_error(ta.dem, tb.dem));
   return gap;
-}
-
-// NaN when the test took no reading before the run's end.
-double error_of(const TestResults& r, const std::string& test) {
-  for (const auto& t : r.granulometry.tests)
-    if (t.test == test && !t.dem.rows.empty()) return t.error;
-  return NAN;
 }
 
 // Largest distance between the same particle in two runs, over the largest distance any
@@ -79,8 +73,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   cli.add_option("--out", out, "Folder for the CSV")->capture_default_str();
   CLI11_PARSE(cli, argc, argv);
-  sets.insert(sets.begin(), {"output.frames=false", "output.particles=false", "output.fields=false",
-                             "integrator.threads=1"});
+  sets.insert(sets.begin(), "integrator.threads=1");
+  const auto quiet = bench::no_output_keys();
+  sets.insert(sets.begin(), quiet.begin(), quiet.end());
 
   std::vector<Variant> variants{{"reference", {"integrator.method=reference"}}};
   for (double step : max_steps) {
@@ -108,7 +103,7 @@ int main(int argc, char** argv) {
     const double speedup = reference.wall_seconds / std::max(run.wall_seconds, 1e-9);
     const double moved = position_gap(run.last, reference.last, sample.particles);
     for (const char* test : tests) {
-      const double error = error_of(run.results, test);
+      const double error = bench::test_error(run.results, test);
       if (std::isnan(error)) continue;
       const double gap = readings_gap(run.results, reference.results, test);
       std::printf("%-30s %9zu %10lld %9.3f %9.1f %10.2e  %-10s %9.3f %10.2e\n", v.name.c_str(),

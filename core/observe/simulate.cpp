@@ -1,5 +1,6 @@
 #include "core/observe/simulate.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace sedem {
@@ -13,10 +14,14 @@ SimulationRun simulate(const Scene& scene, Sample sample) {
   for (double t : instruments.wanted_times()) {
     engine.advance_to(t);
     instruments.observe(engine.snapshot());
+    run.peak_engine_bytes = std::max(run.peak_engine_bytes, engine.bytes());
   }
   run.results = instruments.results();
   run.stats = engine.stats();
   run.last = engine.particles();
+  run.simulated_seconds = engine.time();
+  run.peak_engine_bytes = std::max(run.peak_engine_bytes, engine.bytes());
+  run.threads = engine.threads();
   run.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;

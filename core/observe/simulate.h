@@ -15,6 +15,9 @@ struct SimulationRun {
   std::size_t particles = 0;
   Particles last;  // the particles at the last reading, in sample order
   double wall_seconds = 0;
+  double simulated_seconds = 0;       // the engine's time at the end (the last reading)
+  std::size_t peak_engine_bytes = 0;  // largest Engine::bytes() seen at the readings
+  int threads = 1;                    // threads the engine ran with
 };
 
 SimulationRun simulate(const Scene& scene, Sample sample);

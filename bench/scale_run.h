@@ -1,0 +1,61 @@
+#pragma once
+
+// The scale benchmark's runs: each sample scene's whole test at several particle counts, with
+// no files or pictures, measured for wall time, steps, memory and each test's error against
+// the reference solution. sedem_bench_scale is its command line; the tests drive it directly.
+
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sedem::bench {
+
+struct ScaleOptions {
+  std::vector<std::string> scenes;   // scene files, one sample each
+  std::vector<double> counts;        // sample.simulated_count of the runs
+  std::optional<double> end_time_s;  // run.end_time_s; unset: the scene's
+  std::vector<std::string> sets;     // key=value set in every run
+  int threads = 0;                   // integrator.threads; 0: the scene's
+  std::string label;                 // the CSV's label column (which build, which change)
+  std::filesystem::path out = "bench-out";
+  bool plot = true;  // bench_scale_plot.png (wall time and error against count)
+};
+
+struct ScaleRow {
+  std::string label, sample, status = "ok", message;
+  std::string sets;           // the options' keys, space-separated
+  double requested = 0;       // sample.simulated_count
+  std::size_t particles = 0;  // simulated particles
+  int threads = 0;            // threads the engine ran with
+  double end_time_s = 0;      // the scene's run.end_time_s
+  double simulated_s = 0;     // the engine's time at the end (the last reading)
+  double wall_s = 0;          // the engine advanced and the tests read (as sedem run's)
+  double sample_build_s = 0;  // building the sample, before that
+  double cpu_s = 0;           // the process's CPU time (user + system) over both, every thread
+  std::int64_t steps = 0, list_builds = 0;
+  double particle_steps = 0;
+  std::size_t engine_peak_bytes = 0;  // largest Engine::bytes() seen at the readings
+  std::size_t rss_start_bytes = 0;    // the process's resident memory before the run
+  std::size_t rss_peak_bytes = 0;     // the process's peak resident memory (VmHWM)
+  bool rss_peak_per_run = false;      // VmHWM reset before the run (else: since process start)
+  double error_hydrometer = 0, error_buoyancy = 0, error_pipette = 0;  // pp; NaN: no reading
+
+  // Particles x simulated seconds per wall second.
+  double merit() const;
+};
+
+// Every scene at every count, in that order (a sample's counts together). Prints a table line
+// to `table` (if not null) as each run ends and rewrites out/bench_scale.csv after each, so
+// that an interrupted benchmark keeps what it measured; then draws out/bench_scale_plot.png.
+// A run that fails (e.g. the engine blew up) is a row with status "failed" and its message.
+std::vector<ScaleRow> run_scale_bench(const ScaleOptions& options, std::FILE* table);
+
+void write_scale_csv(const std::vector<ScaleRow>& rows, const std::filesystem::path& file);
+
+// Wall time against count (every sample) and each sample's errors against count.
+void plot_scale(const std::vector<ScaleRow>& rows, const std::filesystem::path& base);
+
+}  // namespace sedem::bench
