@@ -144,6 +144,12 @@ class Engine {
   std::vector<std::pair<double, std::uint32_t>> syncs_;  // min-heap of (t1_, id)
   BoxRegistry boxes_;
   std::vector<std::uint32_t> near_, wake_, failed_;  // scratch
+  struct Ahead {
+    std::uint32_t id;
+    double time;
+    Box before;
+  };
+  std::vector<Ahead> ahead_;  // synced within this step, with the box they had
   DragEvaluator drag_;
   double registry_cell_ = 1e-3, travel_ = 1e-3;
   std::size_t settled_ = 0;

@@ -1,0 +1,121 @@
+// Local time stepping (integrator.local_steps): free grains coast on windows of their own.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/engine/box_registry.h"
+#include "core/engine/free_flight.h"
+#include "core/physics/stokes.h"
+#include "engine_test_support.h"
+
+namespace sedem {
+namespace {
+
+using test::sample_of;
+using test::scene_with;
+
+// The box a free trajectory sweeps holds every point of it, including a velocity that turns
+// (thrown up, then falling), and is no larger than the extremes it reaches.
+TEST(FreeFlight, SweptBoxHoldsTheWholeTrajectory) {
+  for (double rate : {0.0, 50.0, 5e4}) {
+    const FreeFlight f{0.01, 0.2, 3e-3, 2e-3, rate, 0.0, rate > 0 ? -4e-3 : -9.81};
+    const double window = 0.05;
+    const FreeFlight::Range r = f.sweep(window);
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (int k = 0; k <= 1000; ++k) {
+      const FreeFlight::Point p = f.at(window * k / 1000);
+      EXPECT_GE(p.x, r.x0 - 1e-15) << rate;
+      EXPECT_LE(p.x, r.x1 + 1e-15) << rate;
+      EXPECT_GE(p.y, r.y0 - 1e-15) << rate;
+      EXPECT_LE(p.y, r.y1 + 1e-15) << rate;
+      lo = std::min(lo, p.y);
+      hi = std::max(hi, p.y);
+    }
+    // No larger than the extremes (sampled every 50 us: a turn within 20 us of the start, at
+    // rate 5e4, peaks between two samples, ~4e-8 m above them).
+    EXPECT_NEAR(r.y1, hi, 1e-7) << rate;
+    EXPECT_NEAR(r.y0, lo, 1e-7) << rate;
+  }
+}
+
+// A free grain's exact trajectory ends at its terminal velocity, Stokes' law.
+TEST(FreeFlight, TendsToTheStokesVelocity) {
+  const double d = 20e-6, mass = 2500 * std::numbers::pi / 6 * d * d * d;
+  const double c = 3 * std::numbers::pi * 1e-3 * d;
+  const double force = -(2500 - 1000) * 9.81 * std::numbers::pi / 6 * d * d * d;
+  const FreeFlight f{0, 0.3, 0, 0, c / mass, 0, force / c};
+  const double u = stokes::terminal_velocity(d, 2500, Fluid{});
+  EXPECT_NEAR(f.at(1.0).vy, -u, 1e-9 * u);
+  EXPECT_NEAR(f.at(1.0).y, 0.3 - u * (1.0 - mass / c), 1e-9 * u);
+}
+
+// Each overlapping box is reported once, whatever the number of cells the two share.
+TEST(BoxRegistry, ReportsEachOverlapOnceAndForgetsClearedBoxes) {
+  BoxRegistry r;
+  r.configure(1e-3, 0.03, 0.4, 4);
+  r.set(0, Box{-0.005, 0.005, 0.1, 0.11}, 0);  // spans 10 x 10 cells
+  r.set(1, Box{0.0, 0.0001, 0.105, 0.1051}, 1);
+  r.set(2, Box{0.02, 0.021, 0.3, 0.301}, 1);
+  int count = 0;
+  r.overlapping(Box{-0.004, 0.004, 0.102, 0.108}, 3, [&](std::uint32_t id) {
+    EXPECT_TRUE(id == 0 || id == 1);
+    ++count;
+  });
+  EXPECT_EQ(count, 2);
+  r.clear(1);
+  count = 0;
+  r.overlapping(Box{-0.004, 0.004, 0.102, 0.108}, 3, [&](std::uint32_t) { ++count; });
+  EXPECT_EQ(count, 1);
+  r.set(0, Box{0.02, 0.0205, 0.3, 0.3005}, 0);  // moved next to grain 2
+  count = 0;
+  r.overlapping(Box{-0.004, 0.004, 0.102, 0.108}, 3, [&](std::uint32_t) { ++count; });
+  EXPECT_EQ(count, 0);
+}
+
+// Stokes drag and grains too far apart to meet: coasting is exact, so local steps put every
+// grain where the global step does (to round-off), with far fewer particle-steps.
+TEST(LocalSteps, FreeGrainsEndWhereTheGlobalStepPutsThem) {
+  const auto grains = test::scattered(
+      100, -0.03, 0.03, 0.1, 0.4, [](int k) { return 5e-6 + 2e-6 * (k % 30); }, 5);
+  Scene global = scene_with("stokes", "exponential");
+  global.integrator.local_steps = false;
+  Scene local = scene_with("stokes", "exponential");
+  Engine a(global, sample_of(grains)), b(local, sample_of(grains));
+  a.advance_to(20.0);
+  b.advance_to(20.0);
+  const double fall = stokes::terminal_velocity(65e-6, 2500, Fluid{}) * 20.0;
+  double worst = 0;
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < grains.size(); ++i)
+    if (const double gap = std::hypot(a.particles().x[i] - b.particles().x[i],
+                                      a.particles().y[i] - b.particles().y[i]);
+        gap > worst) {
+      worst = gap;
+      at = i;
+    }
+  EXPECT_LT(worst, 1e-9 * fall) << at;
+  EXPECT_LT(b.stats().particle_steps * 20, a.stats().particle_steps);
+}
+
+// A coarse grain falling straight onto a fine one: the two join the common step before they
+// touch, and the fine one is pushed down ahead of the coarse (never passed through).
+TEST(LocalSteps, ACoarseGrainNeverPassesThroughAFineOne) {
+  Scene scene = scene_with("stokes", "exponential");
+  const double coarse = 60e-6, fine = 10e-6;
+  Engine engine(scene, sample_of({{0, 0.2, coarse}, {0, 0.19, fine}}));
+  const double u = stokes::terminal_velocity(coarse, 2500, Fluid{});
+  double worst = 0;
+  for (int k = 1; k <= 200; ++k) {
+    engine.advance_to(k * 0.02 / u / 100);  // 2 cm of the coarse grain's fall in all
+    const auto& p = engine.particles();
+    EXPECT_GT(p.y[0], p.y[1]) << k;
+    const double gap = std::hypot(p.x[0] - p.x[1], p.y[0] - p.y[1]) - 0.5 * (coarse + fine);
+    worst = std::min(worst, gap);
+  }
+  EXPECT_GT(worst, -0.3 * 0.5 * fine);  // overlaps stay a fraction of the fine radius
+  EXPECT_GT(engine.stats().engaged, 0);
+}
+
+}  // namespace
+}  // namespace sedem
