@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/engine/checkpoint_io.h"
 #include "core/physics/stokes.h"
 
 namespace sedem {
@@ -66,31 +67,6 @@ double lowest_measured_height(const Scene& scene) {
     depth = std::max(depth, in.pipette_depth_fraction * h + r);
   }
   return h - depth - 0.01;
-}
-
-template <class T>
-void write_vector(std::ostream& out, const std::vector<T>& v) {
-  const std::uint64_t n = v.size();
-  out.write(reinterpret_cast<const char*>(&n), sizeof n);
-  out.write(reinterpret_cast<const char*>(v.data()), std::streamsize(n * sizeof(T)));
-}
-
-template <class T>
-void read_vector(std::istream& in, std::vector<T>& v) {
-  std::uint64_t n = 0;
-  in.read(reinterpret_cast<char*>(&n), sizeof n);
-  if (!in || n != v.size()) throw std::runtime_error("checkpoint does not match this sample");
-  in.read(reinterpret_cast<char*>(v.data()), std::streamsize(n * sizeof(T)));
-}
-
-template <class T>
-void write_value(std::ostream& out, const T& v) {
-  out.write(reinterpret_cast<const char*>(&v), sizeof v);
-}
-
-template <class T>
-void read_value(std::istream& in, T& v) {
-  in.read(reinterpret_cast<char*>(&v), sizeof v);
 }
 
 constexpr char kMagic[8] = {'S', 'E', 'D', 'E', 'M', 'C', 'K', '1'};

@@ -36,6 +36,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/engine/checkpoint_io.h"
 #include "core/engine/engine.h"
 #include "core/physics/stokes.h"
 
@@ -57,21 +58,6 @@ constexpr std::uint32_t kNoMember = 0xFFFFFFFF;
 
 using Sync = std::pair<double, std::uint32_t>;
 constexpr auto kLater = std::greater<Sync>{};
-
-template <class T>
-void put(std::ostream& out, const std::vector<T>& v) {
-  const std::uint64_t n = v.size();
-  out.write(reinterpret_cast<const char*>(&n), sizeof n);
-  out.write(reinterpret_cast<const char*>(v.data()), std::streamsize(n * sizeof(T)));
-}
-
-template <class T>
-void get(std::istream& in, std::vector<T>& v) {
-  std::uint64_t n = 0;
-  in.read(reinterpret_cast<char*>(&n), sizeof n);
-  if (!in || n != v.size()) throw std::runtime_error("checkpoint does not match this sample");
-  in.read(reinterpret_cast<char*>(v.data()), std::streamsize(n * sizeof(T)));
-}
 
 }  // namespace
 
@@ -467,12 +453,12 @@ void Engine::step_local(double limit) {
 }
 
 void Engine::save_local(std::ostream& out) const {
-  put(out, kind_);
-  put(out, flight_);
-  put(out, t0_);
-  put(out, t1_);
-  put(out, deposit_cell_);
-  put(out, voidage_.solid());
+  write_vector(out, kind_);
+  write_vector(out, flight_);
+  write_vector(out, t0_);
+  write_vector(out, t1_);
+  write_vector(out, deposit_cell_);
+  write_vector(out, voidage_.solid());
   std::vector<Box> boxes(kind_.size());
   std::vector<std::uint8_t> kinds(kind_.size(), BoxRegistry::kNone);
   if (model_.contact)
@@ -481,23 +467,23 @@ void Engine::save_local(std::ostream& out) const {
         boxes[id] = boxes_.box(id);
         kinds[id] = boxes_.kind(id);
       }
-  put(out, boxes);
-  put(out, kinds);
+  write_vector(out, boxes);
+  write_vector(out, kinds);
 }
 
 void Engine::load_local(std::istream& in) {
-  get(in, kind_);
-  get(in, flight_);
-  get(in, t0_);
-  get(in, t1_);
-  get(in, deposit_cell_);
+  read_vector(in, kind_);
+  read_vector(in, flight_);
+  read_vector(in, t0_);
+  read_vector(in, t1_);
+  read_vector(in, deposit_cell_);
   std::vector<double> solid(voidage_.solid().size());
-  get(in, solid);
+  read_vector(in, solid);
   voidage_.set_solid(solid);
   std::vector<Box> boxes(kind_.size());
   std::vector<std::uint8_t> kinds(kind_.size());
-  get(in, boxes);
-  get(in, kinds);
+  read_vector(in, boxes);
+  read_vector(in, kinds);
   for (std::size_t id = 0; id < kind_.size(); ++id) {
     const FreeFlight& f = flight_[id];
     const bool finite = std::isfinite(f.x + f.y + f.vx + f.vy + f.rate + f.ux + f.uy + t0_[id]) &&
