@@ -237,12 +237,12 @@ TEST(Cli, InterruptedAndResumedRunEqualsAnUninterruptedOne) {
   const fs::path whole = kOut / "resume_whole", parts = kOut / "resume_parts";
   fs::remove_all(whole);
   fs::remove_all(parts);
-  const std::string scene =
-      kDemo +
-      " --set run.end_time_s=40 --set sample.simulated_count=1500"
-      " --set output.frames=false --quiet"
-      // short steps, so that the run is still going when interrupted
-      " --set integrator.crossing_fraction=0.1 --set integrator.max_coast_s=0.002";
+  const std::string scene = kDemo +
+                            " --set run.end_time_s=40 --set sample.simulated_count=1500"
+                            " --set output.frames=false --quiet"
+                            // short steps, so that the run is still going when interrupted
+                            " --set integrator.crossing_fraction=0.1 --set "
+                            "integrator.local_steps=true --set integrator.max_coast_s=0.002";
   ASSERT_EQ(test::run_sedem("run " + scene + " --out " + whole.string()).status, 0);
 
   auto stopped = test::run_sedem("run " + scene + " --out " + parts.string() +

@@ -242,9 +242,10 @@ TEST(EngineContact, TouchingPairsFallTogether) {
 // smaller radius. The springs alone would give ~1e-11 m here; the rest is what the bounded number
 // of Jacobi sweeps per step leaves while the frictionless pile still spreads. It shrinks with
 // the step: measured 0.18 at the default crossing_fraction (0.8), 0.05 at 0.2, 0.02 at 0.1.
-double worst_overlap_in_pile(double crossing_fraction) {
+double worst_overlap_in_pile(double crossing_fraction, bool local_steps = false) {
   Scene scene = scene_with("stokes", "exponential");
   scene.integrator.crossing_fraction = crossing_fraction;
+  scene.integrator.local_steps = local_steps;
   const auto grains = test::scattered(
       300, -200e-6, 200e-6, 50e-6, 1.5e-3, [](int k) { return 20e-6 + k % 5 * 5e-6; }, 7);
   Engine engine(scene, sample_of(grains));
@@ -267,6 +268,7 @@ double worst_overlap_in_pile(double crossing_fraction) {
 TEST(EngineContact, DensePileHasNoDeepOverlap) {
   EXPECT_LT(worst_overlap_in_pile(0.8), 0.3);
   EXPECT_LT(worst_overlap_in_pile(0.1), 0.04);
+  EXPECT_LT(worst_overlap_in_pile(0.8, true), 0.3);  // local steps: the same projection
 }
 
 }  // namespace

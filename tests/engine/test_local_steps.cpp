@@ -81,6 +81,7 @@ TEST(LocalSteps, FreeGrainsEndWhereTheGlobalStepPutsThem) {
   Scene global = scene_with("stokes", "exponential");
   global.integrator.local_steps = false;
   Scene local = scene_with("stokes", "exponential");
+  local.integrator.local_steps = true;
   Engine a(global, sample_of(grains)), b(local, sample_of(grains));
   a.advance_to(20.0);
   b.advance_to(20.0);
@@ -102,6 +103,7 @@ TEST(LocalSteps, FreeGrainsEndWhereTheGlobalStepPutsThem) {
 // touch, and the fine one is pushed down ahead of the coarse (never passed through).
 TEST(LocalSteps, ACoarseGrainNeverPassesThroughAFineOne) {
   Scene scene = scene_with("stokes", "exponential");
+  scene.integrator.local_steps = true;
   const double coarse = 60e-6, fine = 10e-6;
   Engine engine(scene, sample_of({{0, 0.2, coarse}, {0, 0.19, fine}}));
   const double u = stokes::terminal_velocity(coarse, 2500, Fluid{});
