@@ -85,8 +85,7 @@ class Engine {
   // Local time stepping (engine_local.cpp).
   void start_local();
   void step_local(double limit);
-  bool coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit,
-             double at_least = 1.0);
+  bool coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit);
   FreeFlight flight_of(std::uint32_t id, const FreeFlight::Point& p) const;
   FreeFlight::Point coasting_at(std::uint32_t id, double t) const;
   void engage(std::uint32_t id, const FreeFlight::Point& p, bool frozen);

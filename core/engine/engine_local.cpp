@@ -31,7 +31,6 @@
 #include <cmath>
 #include <functional>
 #include <istream>
-#include <numeric>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -51,9 +50,6 @@ constexpr double kConverged = 1e-3;  // relative gap to the terminal velocity of
 constexpr double kResponses = 8.0;   // response times of a window still converging
 constexpr double kTravel = 0.5;      // longest travel of a window, in mean spacings
 constexpr std::int64_t kReleaseEvery = 16;
-constexpr double kReleaseMargin = 1.0;  // a member leaves for a window this many crossing times
-// (4 cut the churn of grains leaving and rejoining, but kept more settling grains on the common
-// step and let a spreading pile's overlaps reach 0.7 of a radius: measured, see the tests)
 constexpr std::uint32_t kNoMember = 0xFFFFFFFF;
 
 using Sync = std::pair<double, std::uint32_t>;
@@ -79,8 +75,7 @@ FreeFlight Engine::flight_of(std::uint32_t id, const FreeFlight::Point& p) const
 // The longest window (up to max_coast_s) over which grain id, at p at time t, can coast
 // without its box meeting another or a wall; with `commit`, takes it. False: none as long as
 // its own crossing time (and nothing was changed).
-bool Engine::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit,
-                   double at_least) {
+bool Engine::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit) {
   const FreeFlight f = flight_of(id, p);
   const double r = 0.5 * sample_.particles.diameter[id], pad = r * (1 + kSkin);
   const double hw = model_.half_width;
@@ -114,8 +109,7 @@ bool Engine::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool 
   // space the others need for theirs and engage grains that are nowhere near each other.
   if (speed > 0) window = std::min(window, travel_ / speed);
   const double shortest =
-      speed > 0 ? std::min(window, at_least * scene_.integrator.crossing_fraction * r / speed)
-                : window;
+      speed > 0 ? std::min(window, scene_.integrator.crossing_fraction * r / speed) : window;
   near_.clear();
   boxes_.overlapping(box(window), id, [&](std::uint32_t j) { near_.push_back(j); });
   for (double w = window; w >= shortest; w *= 0.5) {
@@ -252,7 +246,10 @@ void Engine::release_members() {
   for (std::uint32_t id : free) {
     const std::size_t k = member_[id];
     const FreeFlight::Point p{state_.x[k], state_.y[k], state_.vx[k], state_.vy[k]};
-    if (!coast(id, time_, p, true, kReleaseMargin)) continue;
+    // A window of one crossing time is enough: requiring four cut the churn of grains leaving
+    // and rejoining, but kept settling grains on the common step and let a spreading pile's
+    // overlaps reach 0.7 of a radius (DensePileHasNoDeepOverlap).
+    if (!coast(id, time_, p, true)) continue;
     remove_member(k);
     member_[id] = kNoMember;
     ++stats_.released;

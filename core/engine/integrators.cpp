@@ -275,11 +275,7 @@ class ExponentialIntegrator final : public Integrator {
     step_ = limited(fastest(s));
   }
 
-  void refresh_step(const EngineState& s) override {
-    held_stale_ = true;
-    step_ = limited(fastest(s));
-    held_stale_ = false;
-  }
+  void refresh_step(const EngineState& s) override { step_ = limited(fastest(s)); }
 
   void contact_facts(PassFacts& facts) const override {
     facts.contacts = facts_.touching;
@@ -315,7 +311,7 @@ class ExponentialIntegrator final : public Integrator {
   double fastest(const EngineState& s) {
     if (!crossing_) return 0;
     constrained_.resize(s.size());
-    const bool marked = !held_stale_ && !ctx_.members_only;
+    const bool marked = !ctx_.members_only;
     if (marked)
       for (std::uint32_t p : projection_.participants()) constrained_[p] = 1;
     const ThreadSums sums =
@@ -338,7 +334,6 @@ class ExponentialIntegrator final : public Integrator {
   double step_ = 0, ceiling_ = 0;
   double settling_ = 0;  // clear-water settling speed / d^2
   bool crossing_ = false;
-  bool held_stale_ = false;  // the last projection's participants no longer index the state
 };
 
 }  // namespace

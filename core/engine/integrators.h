@@ -98,8 +98,8 @@ class Integrator {
   virtual void mark_touching(std::vector<double>& touching) const {
     std::fill(touching.begin(), touching.end(), 0.0);
   }
-  // The particles the state holds changed (local time stepping): the next step is chosen
-  // again from every moving particle, none of them taken as held.
+  // The particles the state holds changed (local time stepping, where the step counts every
+  // moving particle at least at its settling speed): the next step is chosen again.
   virtual void refresh_step(const EngineState&) {}
 };
 

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "core/instruments/instrument_panel.h"
 #include "core/physics/stokes.h"
 #include "core/reference/reference_field.h"
 #include "core/reference/reference_readings.h"
@@ -85,26 +86,25 @@ ForwardModel::ForwardModel(const Scene& scene, Test test, Grid grid, std::vector
       layers_(std::size_t(scene.instruments.layers)) {
   if (grid_.nodes.size() < 2) throw std::invalid_argument("forward model: two grid nodes or more");
   if (subclasses_ < 1) throw std::invalid_argument("forward model: one subclass per bin or more");
-  const auto& cfg = scene.instruments;
   suspension_.fluid = scene.fluid;
   suspension_.cylinder = scene.cylinder;
   suspension_.particle_density = scene.sample.particle_density;
   suspension_.initial_concentration =
       scene.sample.total_mass / (std::numbers::pi / 4.0 * scene.cylinder.diameter *
                                  scene.cylinder.diameter * scene.cylinder.height);
-  HydrometerDesign design;
-  design.tip_length = cfg.hydrometer_tip_length;
-  design.shoulder_length = cfg.hydrometer_shoulder_length;
-  hydrometer_ = make_hydrometer(design);
-  sphere_.diameter = cfg.sphere_diameter;
-  sphere_.mass = cfg.sphere_mass;
-  sphere_.centre_depth = cfg.buoyancy_depth_fraction * scene.cylinder.height;
-  pipette_.volume = cfg.pipette_volume;
-  pipette_.depth = cfg.pipette_depth_fraction * scene.cylinder.height;
+  {  // the instruments as the simulation's panel builds them from the scene
+    Sample geometry;
+    geometry.particle_density = scene.sample.particle_density;
+    const InstrumentPanel panel(scene, geometry);
+    hydrometer_ = panel.hydrometer();
+    sphere_ = panel.sphere();
+    pipette_ = panel.pipette();
+  }
   clear_reading_ = hydrometer_.reading_at(tip_depth_in_uniform(hydrometer_, scene.fluid.density) -
                                           hydrometer_.bulb_length);
 
   // Each bin's size classes, evenly spaced in log d across it.
+  const auto& cfg = scene.instruments;
   const auto& d = grid_.nodes;
   hindrance_ =
       cfg.reference_hindered
