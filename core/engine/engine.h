@@ -74,6 +74,9 @@ class Engine {
   int threads() const { return threads_; }
   // Whether free grains coast on windows of their own (integrator.local_steps).
   bool local_steps() const { return local_; }
+  // With local steps, the first broken promise of the scheme (a grain outside its box, a
+  // window ended unlooked-at, two boxes overlapping that must not), or "" (for tests).
+  std::string local_violation() const;
   double freeze_height() const { return freeze_height_; }
   // Heap bytes held by the engine, its copy of the sample included.
   std::size_t bytes() const;
@@ -146,7 +149,8 @@ class Engine {
   struct Ahead {
     std::uint32_t id;
     double time;
-    Box before;
+    Box before, after;
+    bool widened;
   };
   std::vector<Ahead> ahead_;  // synced within this step, with the box they had
   DragEvaluator drag_;

@@ -351,28 +351,41 @@ void Engine::step_local(double limit) {
   // at their time, before they step, where its last window put it then (coasting_at). So no
   // member step is cut short by a sync (steps of a few ns would turn the projection's
   // corrections into runaway speeds).
-  failed_.clear();
   ahead_.clear();
-  while (!syncs_.empty() && syncs_.front().first <= target) {
-    const auto [t, id] = syncs_.front();
-    std::pop_heap(syncs_.begin(), syncs_.end(), kLater);
-    syncs_.pop_back();
-    if (kind_[id] != kCoasting || t1_[id] != t) continue;  // engaged since: stale
-    const FreeFlight::Point p = flight_[id].at(t - t0_[id]);
-    if (!std::isfinite(p.x + p.y + p.vx + p.vy))
-      throw InstabilityError(sample_.particles.id[id], t, "position", p.x);
-    move_deposit(id, p.x, p.y);
-    stats_.particle_steps += 1;
-    const Box before = model_.contact ? boxes_.box(id) : Box{};
-    if (coast(id, t, p, true)) {
-      if (model_.contact) ahead_.push_back({id, t, before});
-      continue;
+  for (;;) {
+    failed_.clear();
+    while (!syncs_.empty() && syncs_.front().first <= target) {
+      const auto [t, id] = syncs_.front();
+      std::pop_heap(syncs_.begin(), syncs_.end(), kLater);
+      syncs_.pop_back();
+      if (kind_[id] != kCoasting || t1_[id] != t) continue;  // engaged since: stale
+      const FreeFlight::Point p = flight_[id].at(t - t0_[id]);
+      if (!std::isfinite(p.x + p.y + p.vx + p.vy))
+        throw InstabilityError(sample_.particles.id[id], t, "position", p.x);
+      move_deposit(id, p.x, p.y);
+      stats_.particle_steps += 1;
+      const Box before = model_.contact ? boxes_.box(id) : Box{};
+      if (coast(id, t, p, true)) {
+        if (model_.contact) ahead_.push_back({id, t, before, boxes_.box(id), false});
+        continue;
+      }
+      t1_[id] = HUGE_VAL;  // its heap entry, if any, is stale
+      failed_.push_back(id);
+      break;  // the members' step is chosen again with it
     }
-    t1_[id] = HUGE_VAL;  // its heap entry, if any, is stale
-    failed_.push_back(id);
-    break;  // the members' step is chosen again with it
-  }
-  if (!failed_.empty()) {
+    if (failed_.empty()) break;
+    // The members' step may shrink now, below the time of grains already synced within it:
+    // their box covers their path from the members' time on, the old window's part included,
+    // until their next sync. (Taken before the new members' boxes look for what they reach.)
+    for (Ahead& a : ahead_) {
+      if (a.widened || kind_[a.id] != kCoasting || t0_[a.id] != a.time) continue;
+      const Box& now = a.after;
+      boxes_.set(a.id,
+                 Box{std::min(now.x0, a.before.x0), std::max(now.x1, a.before.x1),
+                     std::min(now.y0, a.before.y0), std::max(now.y1, a.before.y1)},
+                 kCoasting);
+      a.widened = true;
+    }
     for (std::uint32_t id : failed_)
       if (kind_[id] == kCoasting) engage(id, coasting_at(id, time_), false);
     wake_around(kNoMember);
@@ -383,17 +396,13 @@ void Engine::step_local(double limit) {
     moving = count_moving();
     dt = moving ? integrator_->next_step(facts_) : scene_.integrator.max_step;
     target = time_ + dt >= limit ? limit : time_ + dt;
-    // Grains synced beyond the members' new step: their box covers their path from the
-    // members' time on, the old window's part included, until their next sync.
-    for (const Ahead& a : ahead_) {
-      if (a.time <= target || kind_[a.id] != kCoasting) continue;
-      const Box& now = boxes_.box(a.id);
-      boxes_.set(a.id,
-                 Box{std::min(now.x0, a.before.x0), std::max(now.x1, a.before.x1),
-                     std::min(now.y0, a.before.y0), std::max(now.y1, a.before.y1)},
-                 kCoasting);
-    }
+    // Syncs still due before the new target are taken in the next round: no window may end
+    // unlooked-at while the members step past it.
   }
+  // Those synced within the step after all need their new box only.
+  for (const Ahead& a : ahead_)
+    if (a.widened && a.time <= target && kind_[a.id] == kCoasting && t0_[a.id] == a.time)
+      boxes_.set(a.id, a.after, kCoasting);
 
   if (moving && target > time_) {
     if (lists_stale_) {
@@ -507,6 +516,51 @@ void Engine::load_local(std::istream& in) {
   index_members();
   settled_ = std::size_t(std::count(kind_.begin(), kind_.end(), kSettled));
   forces_.stiffness.assign(state_.size(), 0.0);
+}
+
+// The scheme's promise, checked grain by grain (for tests; O(n) queries): every grain is
+// inside its box, no coasting grain's window has ended, and only grains that the common step
+// handles (members, and settled grains beside frozen ones) hold overlapping boxes. One
+// exception: a grain synced ahead of the members in a step a joining grain then shortened
+// keeps its old box too, where a grain synced after it may have passed since.
+std::string Engine::local_violation() const {
+  if (!local_ || !model_.contact) return {};
+  const Particles& s = sample_.particles;
+  const std::size_t n = kind_.size();
+  auto where = [&](std::uint32_t id) {
+    if (kind_[id] == kCoasting) return coasting_at(id, time_);
+    if (kind_[id] == kSettled) return FreeFlight::Point{flight_[id].x, flight_[id].y, 0, 0};
+    const std::size_t k = member_[id];
+    return FreeFlight::Point{state_.x[k], state_.y[k], 0, 0};
+  };
+  auto name = [&](std::uint32_t id) {
+    static const char* const kinds[] = {"coasting", "moving", "frozen", "settled"};
+    return "grain " + std::to_string(id) + " (" + kinds[kind_[id]] + ")";
+  };
+  for (std::uint32_t id = 0; id < n; ++id) {
+    if (kind_[id] == kCoasting && t1_[id] < time_)
+      return name(id) + ": its window ended at " + std::to_string(t1_[id]) + " s, before " +
+             std::to_string(time_) + " s";
+    const FreeFlight::Point p = where(id);
+    const double r = 0.5 * s.diameter[id];
+    const Box& b = boxes_.box(id);
+    if (p.x - r < b.x0 || p.x + r > b.x1 || p.y - r < b.y0 || p.y + r > b.y1)
+      return name(id) + " is outside its box";
+  }
+  for (std::uint32_t id = 0; id < n; ++id) {
+    std::string found;
+    boxes_.overlapping(boxes_.box(id), id, [&](std::uint32_t j) {
+      const int a = kind_[id], b = kind_[j];
+      const bool ahead = (a == kCoasting && t0_[id] > time_) || (b == kCoasting && t0_[j] > time_);
+      const bool handled =
+          ahead || (a != kCoasting && b != kCoasting && !(a == kSettled && b == kMoving) &&
+                    !(a == kMoving && b == kSettled));
+      if (!handled && found.empty())
+        found = "the boxes of " + name(id) + " and " + name(j) + " overlap";
+    });
+    if (!found.empty()) return found;
+  }
+  return {};
 }
 
 }  // namespace sedem

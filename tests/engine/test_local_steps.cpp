@@ -119,5 +119,28 @@ TEST(LocalSteps, ACoarseGrainNeverPassesThroughAFineOne) {
   EXPECT_GT(engine.stats().engaged, 0);
 }
 
+// A crowded suspension of coarse and fine grains (many joining and leaving the common step):
+// after every step each grain is inside its box, no window has ended unlooked-at and no two
+// boxes overlap that must not. (A step that a joining grain shortened once let later windows
+// end unlooked-at, and two grains met at 50 m/s.)
+TEST(LocalSteps, KeepTheirPromiseInACrowdedSuspension) {
+  Scene scene = scene_with("di_felice", "exponential");
+  scene.integrator.local_steps = true;
+  scene.integrator.freeze_settled = true;
+  const double hw = scene.cylinder.half_width();
+  const auto grains = test::scattered(
+      1500, -0.3 * hw, 0.3 * hw, 0.0005, 0.012,
+      [](int k) { return k % 4 == 0 ? 70e-6 : (k % 4 == 1 ? 30e-6 : 5e-6); }, 7, 0.0);
+  Engine engine(scene, sample_of(grains));
+  std::int64_t engaged = 0;
+  while (engine.time() < 0.5) {
+    engine.step(0.5);
+    const std::string broken = engine.local_violation();
+    ASSERT_EQ(broken, "") << "at t = " << engine.time() << " s, step " << engine.stats().steps;
+    engaged = engine.stats().engaged;
+  }
+  EXPECT_GT(engaged, 100) << engaged;  // the suspension did crowd the common step
+}
+
 }  // namespace
 }  // namespace sedem
