@@ -31,6 +31,8 @@ namespace sedem::render {
 namespace {
 
 constexpr int kTitleHeight = 34;
+constexpr int kLeftMargin = 72, kBottomMargin = 46, kTopMargin = 28;
+constexpr int kLegendFont = 11;
 
 std::string identifier(const std::string& text) {
   std::string out;
@@ -281,13 +283,13 @@ vtkSmartPointer<vtkChartXY> make_chart(const Plot& plot,
   }
   chart->SetShowLegend(plot.legend && !plot.series.empty());
   auto* legend = chart->GetLegend();
-  legend->GetLabelProperties()->SetFontSize(11);
+  legend->GetLabelProperties()->SetFontSize(kLegendFont);
   legend->GetLabelProperties()->SetFontFamilyToArial();
   legend->GetLabelProperties()->SetColor(0, 0, 0);
-  // Outside the data: the chart keeps a strip right of the plot area for it.
+  // Outside the data, in the strip right of the plot area (placed by draw_figure).
   legend->SetInline(false);
-  legend->SetHorizontalAlignment(vtkChartLegend::RIGHT);
-  legend->SetVerticalAlignment(vtkChartLegend::TOP);
+  legend->SetHorizontalAlignment(vtkChartLegend::CUSTOM);
+  legend->SetVerticalAlignment(vtkChartLegend::CUSTOM);
   return chart;
 }
 
@@ -372,6 +374,40 @@ namespace {
 // Draws `figure` into `view`; returns its charts, one per panel.
 std::vector<vtkSmartPointer<vtkChartXY>> draw_figure(const Figure& figure, OffscreenView& view);
 
+// The strip right of the plot areas that holds the widest legend of the figure (none without
+// legends): its longest entry, the line sample before it and padding.
+int legend_width(const Figure& figure) {
+  auto prop = vtkSmartPointer<vtkTextProperty>::New();
+  prop->SetFontFamilyToArial();
+  prop->SetFontSize(kLegendFont);
+  auto* renderer = vtkTextRenderer::GetInstance();
+  int widest = -1;
+  for (const auto& panel : figure.panels) {
+    if (!panel.legend) continue;
+    for (const auto& s : panel.series) {
+      if (s.style == SeriesStyle::band) continue;
+      int bbox[4] = {0, 0, 0, 0};
+      if (renderer) renderer->GetBoundingBox(prop, s.name, bbox, 72);
+      widest = std::max(widest, bbox[1] - bbox[0]);
+    }
+  }
+  return widest < 0 ? 16 : widest + 64;
+}
+
+// A legend's height as vtkChartLegend lays it out: per entry a line of text and its padding
+// (5 pixels), and the padding once more.
+int legend_height(const Plot& plot) {
+  auto prop = vtkSmartPointer<vtkTextProperty>::New();
+  prop->SetFontFamilyToArial();
+  prop->SetFontSize(kLegendFont);
+  int bbox[4] = {0, 0, 0, 12};
+  if (auto* renderer = vtkTextRenderer::GetInstance())
+    renderer->GetBoundingBox(prop, "Tg", bbox, 72);
+  const auto entries = std::count_if(plot.series.begin(), plot.series.end(),
+                                     [](const auto& s) { return s.style != SeriesStyle::band; });
+  return int(entries) * (bbox[3] - bbox[2] + 5) + 5;
+}
+
 std::pair<int, int> figure_size(const Figure& figure) {
   const int columns = std::clamp(figure.columns, 1, int(figure.panels.size()));
   const int rows = (int(figure.panels.size()) + columns - 1) / columns;
@@ -437,13 +473,23 @@ std::vector<vtkSmartPointer<vtkChartXY>> draw_figure(const Figure& figure, Offsc
   const auto [width, height] = figure_size(figure);
   auto actor = vtkSmartPointer<vtkContextActor>::New();
   const auto colors = name_indices(figure);
+  const int legend_w = legend_width(figure);
   for (std::size_t i = 0; i < figure.panels.size(); ++i) {
     const int r = int(i) / columns, c = int(i) % columns;
     auto chart = make_chart(figure.panels[i], colors);
-    chart->SetAutoSize(false);
-    chart->SetSize(vtkRectf(float(c * figure.panel_width),
-                            float((rows - 1 - r) * figure.panel_height), float(figure.panel_width),
-                            float(figure.panel_height)));
+    // Every panel's plot area at the same place in its panel, so that stacked panels share
+    // their axes' ends: room on the left for tick labels and the axis title, below for the
+    // same, above for the panel's title, and on the right for the widest legend.
+    chart->SetLayoutStrategy(vtkChart::AXES_TO_RECT);
+    const float x0 = float(c * figure.panel_width),
+                y0 = float((rows - 1 - r) * figure.panel_height);
+    chart->SetSize(vtkRectf(x0 + kLeftMargin, y0 + kBottomMargin,
+                            float(figure.panel_width - kLeftMargin - legend_w),
+                            float(figure.panel_height - kBottomMargin - kTopMargin)));
+    // The legend's point is its lower-left corner: its top level with the plot area's.
+    chart->GetLegend()->SetPoint(vtkVector2f(
+        x0 + float(figure.panel_width - legend_w + 8),
+        y0 + float(figure.panel_height - kTopMargin - legend_height(figure.panels[i]))));
     actor->GetScene()->AddItem(chart);
     charts.push_back(chart);
   }

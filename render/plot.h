@@ -52,7 +52,7 @@ struct Plot {
   std::string title;
   PlotAxis x, y;
   std::vector<PlotSeries> series;
-  bool legend = true;  // right of the plot area, outside the data
+  bool legend = true;  // right of the plot area, outside the data, its top level with it
 };
 
 // An axis' range and ticks as drawn: linear axes end on whole steps of 1, 2 or 5 times a
@@ -85,7 +85,7 @@ Figure single_plot(Plot plot, int width = 640, int height = 440);
 vtkSmartPointer<vtkImageData> render_figure(const Figure& figure);
 
 // Where a rendered figure's panels put their data and legends (pixels, origin bottom left):
-// the plot area between the axes, and the legend's anchor (its top-left corner).
+// the plot area between the axes, and the legend's anchor (its lower-left corner).
 struct PanelLayout {
   std::array<float, 4> plot_area;  // x0, y0, x1, y1
   bool legend_shown = false;
