@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <set>
 #include <stdexcept>
 
 namespace sedem::app {
@@ -36,7 +38,64 @@ render::GradingCurve curve(const std::string& name, const TestReadings& t) {
   return c;
 }
 
+// A scene value as a reader would write it: 3000, 0.3, true, equal_mass, [0.5, 1].
+std::string short_value(const nlohmann::json& v) {
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_number_float()) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v.get<double>());
+    return buf;
+  }
+  if (v.is_array()) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + short_value(v[i]);
+    return out + "]";
+  }
+  return v.dump();
+}
+
 }  // namespace
+
+std::vector<std::string> run_labels(const std::vector<nlohmann::json>& scenes) {
+  std::vector<std::string> names;
+  for (const auto& s : scenes)
+    names.push_back(s.is_object() && s.contains("name") ? short_value(s.at("name")) : "run");
+  const std::set<std::string> distinct(names.begin(), names.end());
+  if (distinct.size() == names.size()) return names;
+  // Every key that some scene has with another value (or not at all), in key order.
+  std::set<std::string> keys;
+  for (const auto& s : scenes)
+    if (s.is_object())
+      for (const auto& item : s.items()) keys.insert(item.key());
+  std::vector<std::string> differing;
+  for (const auto& key : keys) {
+    if (key == "name") continue;
+    const auto value = [&](const nlohmann::json& s) {
+      return s.is_object() && s.contains(key) ? s.at(key) : nlohmann::json();
+    };
+    for (const auto& s : scenes)
+      if (value(s) != value(scenes.front())) {
+        differing.push_back(key);
+        break;
+      }
+  }
+  constexpr std::size_t kShown = 3;
+  std::vector<std::string> labels;
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    std::string label = distinct.size() > 1 ? names[i] : "";
+    for (std::size_t k = 0; k < differing.size() && k < kShown; ++k) {
+      const auto& s = scenes[i];
+      const auto& key = differing[k];
+      label += (label.empty() ? "" : ", ") + key + "=" +
+               (s.is_object() && s.contains(key) ? short_value(s.at(key)) : "unset");
+    }
+    if (differing.size() > kShown)
+      label += ", +" + std::to_string(differing.size() - kShown) + " more";
+    if (differing.empty()) label = names[i] + " (run " + std::to_string(i + 1) + ")";
+    labels.push_back(label);
+  }
+  return labels;
+}
 
 render::MassBandsFigure fig11_input(const std::vector<LabelledResults>& runs) {
   render::MassBandsFigure fig;

@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "core/observe/instrument_observer.h"
 #include "render/mass_bands.h"
 #include "render/paper_figures.h"
@@ -21,6 +23,12 @@ struct LabelledResults {
   double homogeneous_density = 0;  // kg/m^3, the suspension at t = 0 (Fig. 13)
   bool vector_figures = false;     // output.vector_figures: Figs. 12-18 also as SVG
 };
+
+// Labels for runs drawn side by side, from their resolved scenes (run.json's "scene"): each
+// scene's name when the names tell the runs apart; otherwise what differs between the scenes,
+// as "key=value" (at most three keys, then "+N more"), after the name where names differ in
+// part. Runs whose scenes are the same are numbered.
+std::vector<std::string> run_labels(const std::vector<nlohmann::json>& scenes);
 
 render::MassBandsFigure fig11_input(const std::vector<LabelledResults>& runs);
 

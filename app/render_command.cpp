@@ -24,7 +24,8 @@ struct RenderFailure : std::runtime_error {
   int status;
 };
 
-LabelledResults render_one(const fs::path& dir, bool quiet) {
+// Redraws one run; `scene_json` receives its resolved scene as run.json holds it.
+LabelledResults render_one(const fs::path& dir, bool quiet, nlohmann::json& scene_json) {
   std::ifstream in(dir / "run.json");
   if (!in)
     throw RenderFailure(dir.string() + ": no run.json (is this a sedem run folder?)",
@@ -36,6 +37,7 @@ LabelledResults render_one(const fs::path& dir, bool quiet) {
       throw RenderFailure((dir / "run.json").string() + ": not a sedem run record",
                           exit_code::invalid_scene);
     scene = scene_from_json(record.at("scene"), (dir / "run.json").string());
+    scene_json = record.at("scene");
   } catch (const nlohmann::json::exception& e) {
     throw RenderFailure((dir / "run.json").string() + ": " + e.what(), exit_code::invalid_scene);
   } catch (const SceneError& e) {
@@ -82,9 +84,10 @@ LabelledResults render_one(const fs::path& dir, bool quiet) {
 
 int render_runs(const RenderOptions& options) {
   std::vector<LabelledResults> runs;
+  std::vector<nlohmann::json> scenes;
   for (const auto& dir : options.run_dirs) {
     try {
-      runs.push_back(render_one(dir, options.quiet));
+      runs.push_back(render_one(dir, options.quiet, scenes.emplace_back()));
     } catch (const RenderFailure& e) {
       std::fprintf(stderr, "sedem: %s\n", e.what());
       return e.status;
@@ -94,6 +97,9 @@ int render_runs(const RenderOptions& options) {
     }
   }
   if (runs.size() > 1) {
+    // Each panel and legend entry named by what differs between the runs.
+    const auto labels = run_labels(scenes);
+    for (std::size_t i = 0; i < runs.size(); ++i) runs[i].label = labels[i];
     try {
       write_figures(runs, options.out_dir);
     } catch (const std::exception& e) {

@@ -199,7 +199,6 @@ void plot_scale(const std::vector<ScaleRow>& rows, const fs::path& base) {
     per_sample[r.sample].push_back(&r);
   }
   for (auto& [name, s] : by_sample) wall.series.push_back(s);
-  wall.legend_corner = render::LegendCorner::top_left;
   fig.panels.push_back(wall);
   // Each sample's errors against the reference.
   for (const auto& [sample, list] : per_sample) {

@@ -29,7 +29,6 @@ Figure invert_figure(const InvertFigureInput& in) {
   plot.x = axis("diameter", "µm", std::pow(10.0, std::floor(std::log10(lo))),
                 std::pow(10.0, std::ceil(std::log10(hi))), true);
   plot.y = axis("percent finer", "%", 0.0, 110.0);
-  plot.legend_corner = LegendCorner::top_left;
   const std::array<unsigned char, 3> black{0, 0, 0};
   if (!in.true_diameter_m.empty()) {
     PlotSeries truth("true", micrometres(in.true_diameter_m), in.true_percent_finer);

@@ -41,16 +41,26 @@ struct PanelGeometry {
 
 PanelGeometry panel_geometry(const MassBandsFigure& f, double px0, double py0) {
   PanelGeometry g;
-  g.col_x0 = px0 + 14;
-  g.col_y0 = py0 + 12;
+  g.col_x0 = px0 + 36;  // the depth axis' labels on the left
+  g.col_y0 = py0 + 26;  // its title below
   g.col_y1 = py0 + f.panel_height - 30;
   g.scale = (g.col_y1 - g.col_y0) / f.height;
   const double col_w = f.width * g.scale;
   g.inset_x0 = g.col_x0 + col_w + 26;
   const double gap = 8;
   g.inset_side =
-      std::min(px0 + f.panel_width - 8 - g.inset_x0, (g.col_y1 - g.col_y0 - 2 * gap) / 3.0);
+      std::min(px0 + f.panel_width - 42 - g.inset_x0, (g.col_y1 - g.col_y0 - 2 * gap) / 3.0);
   return g;
+}
+
+// Depth below the free surface, every 10 cm, on the column's left.
+void draw_depth_axis(PixelCanvas& canvas, const MassBandsFigure& f, const PanelGeometry& g) {
+  for (int cm = 0; cm <= int(100 * f.height + 1e-9); cm += 10) {
+    const double y = g.col_y1 - 0.01 * cm * g.scale;
+    canvas.line(g.col_x0 - 4, y, g.col_x0, y);
+    canvas.text(std::to_string(cm), g.col_x0 - 15, y, 10, true);
+  }
+  canvas.text("depth (cm)", g.col_x0 + 0.5 * f.width * g.scale - 6, g.col_y0 - 13, 10, true);
 }
 
 void draw_panel(PixelCanvas& canvas, const MassBandsFigure& f, const ColumnSample& sample,
@@ -68,45 +78,50 @@ void draw_panel(PixelCanvas& canvas, const MassBandsFigure& f, const ColumnSampl
     canvas.rectangle(g.col_x0, top - band_h, g.col_x0 + col_w, top, {v, v, v});
   }
   canvas.frame(g.col_x0, g.col_y0, g.col_x0 + col_w, g.col_y1);
+  draw_depth_axis(canvas, f, g);
 
   const auto& p = state.particles;
   const std::size_t n = std::min({p.x.size(), p.y.size(), p.diameter.size()});
   const double col_h = g.col_y1 - g.col_y0;
+  const double side = g.inset_side;
   for (const auto& inset : f.insets) {
-    const double side = g.inset_side;
-    const double zoom = g.scale * inset.magnification;  // pixels per metre inside the inset
-    const double fov = side / zoom;                     // metres shown across the inset
-    double world_y0 = 0, inset_y0 = 0;
+    const auto w = zoom_window(p, f.height, f.width, inset);
+    const double zoom = side / w.side;  // pixels per metre inside the inset
+    double inset_y0 = 0;
     switch (inset.where) {
       case ColumnInset::Where::top:
-        world_y0 = f.height - fov;
         inset_y0 = g.col_y1 - side;
         break;
       case ColumnInset::Where::middle:
-        world_y0 = 0.5 * (f.height - fov);
         inset_y0 = g.col_y0 + 0.5 * (col_h - side);
         break;
       case ColumnInset::Where::bottom:
-        world_y0 = 0;
         inset_y0 = g.col_y0;
         break;
     }
-    const double world_x0 = -0.5 * fov;
     canvas.rectangle(g.inset_x0, inset_y0, g.inset_x0 + side, inset_y0 + side, {255, 255, 255});
     for (std::size_t i = 0; i < n; ++i) {
       const double r = 0.5 * p.diameter[i];
-      const double u = p.x[i] - world_x0, v = p.y[i] - world_y0;
-      if (u - r < 0 || v - r < 0 || u + r > fov || v + r > fov) continue;  // whole discs only
-      canvas.disc(g.inset_x0 + u * zoom, inset_y0 + v * zoom, r * zoom, kDiscColor);
+      const double u = p.x[i] - w.x0, v = p.y[i] - w.y0;
+      if (u - r < 0 || v - r < 0 || u + r > w.side || v + r > w.side) continue;  // whole discs
+      canvas.disc(g.inset_x0 + u * zoom, inset_y0 + v * zoom,
+                  std::max(r * zoom, 0.5 * kMinDiscPixels), kDiscColor);
     }
     canvas.frame(g.inset_x0, inset_y0, g.inset_x0 + side, inset_y0 + side);
     // The zoomed window marked on the column, and a leader to its inset.
-    const double mx0 = g.col_x0 + 0.5 * col_w + world_x0 * g.scale;
-    const double my0 = g.col_y0 + world_y0 * g.scale;
-    const double m = std::max(fov * g.scale, 3.0);
+    const double mx0 = g.col_x0 + 0.5 * col_w + w.x0 * g.scale;
+    const double my0 = g.col_y0 + w.y0 * g.scale;
+    const double m = std::max(w.side * g.scale, 3.0);
     canvas.frame(mx0, my0, mx0 + m, my0 + m);
     canvas.line(mx0 + m, my0 + 0.5 * m, g.inset_x0, inset_y0 + 0.5 * side);
-    canvas.text(format("x%g", inset.magnification), g.inset_x0 + 4, inset_y0 + side - 8, 10, false);
+    // Beside the inset, not over its grains: the magnification, then the grains it holds.
+    const double magnification = side / (w.side * g.scale);
+    const double tx = g.inset_x0 + side + 4;
+    canvas.text(format(magnification < 99.5 ? "\u00d7%.1f" : "\u00d7%.0f", magnification), tx,
+                inset_y0 + side - 6, 10, false);
+    canvas.text(w.grains == 0 ? std::string("no") : std::to_string(w.grains), tx, inset_y0 + 19, 10,
+                false);
+    canvas.text(w.grains == 1 ? "grain" : "grains", tx, inset_y0 + 7, 10, false);
   }
 }
 
@@ -122,10 +137,15 @@ void draw_grey_scale(PixelCanvas& canvas, double x0, double y0, double h, double
   for (int i = 0; i <= 4; ++i) {
     const double y = y0 + h * i / 4.0;
     canvas.line(x0 + w, y, x0 + w + 4, y);
-    canvas.text(format("%.3g", 100.0 * full_scale * i / 4.0), x0 + w + 7, y, 11, false);
+    // The top is every share from full scale up: say so.
+    canvas.text((i == 4 ? "\u2265" : "") + format("%.3g", 100.0 * full_scale * i / 4.0), x0 + w + 7,
+                y, 11, false);
   }
   canvas.text("mass share", x0 + 0.5 * w + 20, y0 + h + 30, 12, true, true);
   canvas.text("(% of total)", x0 + 0.5 * w + 20, y0 + h + 14, 11, true);
+  canvas.text("zooms: grains", x0 + 0.5 * w + 20, y0 - 20, 10, true);
+  canvas.text("at true size,", x0 + 0.5 * w + 20, y0 - 33, 10, true);
+  canvas.text(format("\u2265 %.1f px", kMinDiscPixels), x0 + 0.5 * w + 20, y0 - 46, 10, true);
 }
 
 std::size_t row_count(const MassBandsFigure& f) {
@@ -140,17 +160,68 @@ ParticleDiscs discs_of(const Particles& particles) {
   return {particles.x, particles.y, particles.diameter};
 }
 
+ZoomWindow zoom_window(const ParticleDiscs& p, double height, double width,
+                       const ColumnInset& inset) {
+  const int third = inset.where == ColumnInset::Where::top      ? 2
+                    : inset.where == ColumnInset::Where::middle ? 1
+                                                                : 0;
+  const double lo = height * third / 3.0, hi = height * (third + 1) / 3.0;
+  const std::size_t n = std::min({p.x.size(), p.y.size(), p.diameter.size()});
+  std::vector<double> xs, ys;
+  double largest = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (p.y[i] < lo || p.y[i] >= hi || std::abs(p.x[i]) > 0.5 * width) continue;
+    xs.push_back(p.x[i]);
+    ys.push_back(p.y[i]);
+    largest = std::max(largest, p.diameter[i]);
+  }
+  ZoomWindow w;
+  const double widest = std::min(width, hi - lo);
+  if (xs.empty()) {  // nothing to show: a window of the column's width in the third's middle
+    w.side = widest;
+    w.x0 = -0.5 * w.side;
+    w.y0 = 0.5 * (lo + hi - w.side);
+    return w;
+  }
+  // As wide as holds about `grains` of the third's grains at their mean spacing there, over
+  // the height they fill (twice their interquartile range: the third for a suspension, a
+  // few millimetres for a bed).
+  auto quantile = [](std::vector<double> v, double q) {
+    const auto k = std::ptrdiff_t(q * double(v.size() - 1));
+    std::nth_element(v.begin(), v.begin() + k, v.end());
+    return v[std::size_t(k)];
+  };
+  const double filled =
+      std::clamp(2.0 * (quantile(ys, 0.75) - quantile(ys, 0.25)), 12.0 * largest, hi - lo);
+  const double per_grain = width * filled / double(xs.size());
+  w.side = std::clamp(std::sqrt(std::max(inset.grains, 1) * per_grain),
+                      std::min(12.0 * largest, widest), widest);
+  auto median = [](std::vector<double>& v) {
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  w.x0 = std::clamp(median(xs) - 0.5 * w.side, -0.5 * width, 0.5 * width - w.side);
+  w.y0 = std::clamp(median(ys) - 0.5 * w.side, lo, hi - w.side);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = 0.5 * p.diameter[i], u = p.x[i] - w.x0, v = p.y[i] - w.y0;
+    if (u - r >= 0 && v - r >= 0 && u + r <= w.side && v + r <= w.side) ++w.grains;
+  }
+  return w;
+}
+
+double default_full_scale(const MassBandsFigure& f) {
+  std::size_t bands = 0;
+  for (const auto& s : f.samples)
+    for (const auto& st : s.states) bands = std::max(bands, st.band_mass_fraction.size());
+  return bands > 0 ? std::min(1.0, 2.0 / double(bands)) : 1.0;
+}
+
 vtkSmartPointer<vtkImageData> render_mass_bands(const MassBandsFigure& f) {
   const std::size_t rows = row_count(f);
   if (f.samples.empty() || rows == 0)
     throw std::invalid_argument("a mass-band figure needs a sample with a state");
-  double full_scale = f.full_scale_fraction;
-  if (full_scale <= 0) {
-    for (const auto& s : f.samples)
-      for (const auto& st : s.states)
-        for (double v : st.band_mass_fraction) full_scale = std::max(full_scale, v);
-    if (full_scale <= 0) full_scale = 1;
-  }
+  const double full_scale =
+      f.full_scale_fraction > 0 ? f.full_scale_fraction : default_full_scale(f);
   const int title_h = f.title.empty() ? 0 : kTitleHeight;
   const int width = int(f.samples.size()) * f.panel_width + kScaleWidth;
   const int height = int(rows) * f.panel_height + title_h;

@@ -12,8 +12,9 @@
 namespace sedem::render {
 
 // Fig. 11 of the paper: the column as grey bands of mass (grey = the band's share of the
-// total mass, white = none), with zoom insets that draw the particles as discs at true scale.
-// One panel per time (rows), several samples side by side (columns).
+// total mass, white = none) beside a depth axis, with zoom insets that draw the particles as
+// discs at true scale (at least kMinDiscPixels across, so that the finest still show). One
+// panel per time (rows), several samples side by side (columns).
 
 // Particle centres and diameters in the section (m; x across, axis at 0; y up, bottom at 0).
 struct ParticleDiscs {
@@ -35,25 +36,43 @@ struct ColumnSample {
   std::vector<ColumnState> states;  // one panel each, top to bottom
 };
 
-// A zoom window on the axis of the column, drawn beside it.
+// A zoom window on one third of the column (top, middle or bottom), drawn beside it. It is
+// placed on the grains there (centred on their median position) and sized to hold about
+// `grains` of them, between 12 largest diameters and the column's width; its magnification
+// against the column's own scale and the grains it holds are printed on it. With no grain in
+// its third it says so.
 struct ColumnInset {
   enum class Where { top, middle, bottom } where;
-  double magnification;  // relative to the column's own scale in the picture
+  int grains = 40;
 };
+
+// A zoom window in the section (m): lower-left corner, side, and the whole discs inside.
+struct ZoomWindow {
+  double x0 = 0, y0 = 0, side = 0;
+  std::size_t grains = 0;
+};
+ZoomWindow zoom_window(const ParticleDiscs& particles, double height, double width,
+                       const ColumnInset& inset);
+
+inline constexpr double kMinDiscPixels = 2.4;
 
 struct MassBandsFigure {
   std::string title;
   double height = 0.457;  // m, the column H
   double width = 0.0635;  // m, the section B
   std::vector<ColumnSample> samples;
-  std::vector<ColumnInset> insets = {{ColumnInset::Where::top, 25.0},
-                                     {ColumnInset::Where::middle, 25.0},
-                                     {ColumnInset::Where::bottom, 62.5}};
-  int panel_width = 230;  // pixels
+  std::vector<ColumnInset> insets = {
+      {ColumnInset::Where::top}, {ColumnInset::Where::middle}, {ColumnInset::Where::bottom}};
+  int panel_width = 270;  // pixels
   int panel_height = 380;
-  // Share of the total mass drawn black. 0: the largest band share in the figure.
+  // Share of the total mass drawn black; larger shares are black too, and the scale's top
+  // reads "≥". 0: twice the share of a band in the homogeneous suspension (2 / bands), so
+  // the suspension shows mid-grey whatever the bed holds.
   double full_scale_fraction = 0;
 };
+
+// The share drawn black when the figure sets none.
+double default_full_scale(const MassBandsFigure& figure);
 
 vtkSmartPointer<vtkImageData> render_mass_bands(const MassBandsFigure& figure);
 

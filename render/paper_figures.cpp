@@ -29,7 +29,7 @@ Figure sample_grid(std::string title, std::vector<Plot> panels) {
   Figure f;
   f.title = std::move(title);
   f.columns = std::min<int>(3, std::max<int>(1, int(panels.size())));
-  f.panel_width = 460;
+  f.panel_width = 520;  // the legend beside the plot area
   f.panel_height = 320;
   f.panels = std::move(panels);
   return f;
@@ -89,17 +89,44 @@ void fit_y_range(Plot& plot) {
   }
 }
 
+// True when every series has the same times and values as the first, within `tolerance` of
+// the values' spread: then one curve stands for all of them.
+bool all_coincide(const std::vector<PlotSeries>& series) {
+  if (series.size() < 2) return false;
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (const auto& s : series)
+    for (double y : s.y) lo = std::min(lo, y), hi = std::max(hi, y);
+  const double tolerance = 1e-3 * std::max(hi - lo, 1e-12 * std::max(std::abs(hi), 1.0));
+  const auto& first = series.front();
+  for (const auto& s : series) {
+    if (s.x.size() != first.x.size() || s.y.size() != first.y.size()) return false;
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+      if (std::abs(s.x[i] - first.x[i]) > 1e-9 * std::max(1.0, std::abs(first.x[i]))) return false;
+    for (std::size_t i = 0; i < s.y.size(); ++i)
+      if (!(std::abs(s.y[i] - first.y[i]) <= tolerance)) return false;
+  }
+  return true;
+}
+
 template <class Series, class Member>
 Plot against_time(const std::vector<Series>& samples, std::string title, PlotAxis y, Member member,
-                  double factor, LegendCorner legend = LegendCorner::top_right) {
+                  double factor) {
   Plot p;
-  p.legend_corner = legend;
   p.title = std::move(title);
   p.x = time_axis();
   p.y = std::move(y);
   for (const auto& s : samples)
     p.series.emplace_back(s.sample, s.time_s, scaled(s.*member, factor),
                           SeriesStyle::line_and_points);
+  // The samples' curves on top of one another (the limiting diameter at a fixed depth
+  // depends on time alone) show as one, in black, named for what it stands for.
+  if (all_coincide(p.series)) {
+    PlotSeries all(kAllSamples, p.series.front().x, p.series.front().y,
+                   SeriesStyle::line_and_points);
+    all.color = kBlack;
+    p.series = {std::move(all)};
+    p.title += ", " + std::string(kAllSamples);
+  }
   return p;
 }
 
@@ -119,7 +146,6 @@ Figure fig12_largest_diameter(const LargestDiameterInput& in) {
     Plot plot;
     plot.title = time_title(t);
     plot.x = axis("depth", "m", 0.0, in.column_height_m);
-    plot.legend_corner = LegendCorner::bottom_right;
     plot.y = diameter_axis();
     for (const auto& s : in.samples)
       for (const auto& p : s.profiles)
@@ -208,7 +234,6 @@ Figure fig13_bulb_density(const std::vector<SampleBulbDensity>& samples) {
     plot.x = axis("distance below the bulb's top", unit, 0.0, 100.0 * length);
     plot.x.column = "position_along_the_bulb_cm";
     plot.y = axis("suspension density", "kg/m³");
-    plot.legend_corner = LegendCorner::top_right;
     if (s.homogeneous_kg_m3 > 0) {
       char name[64];
       std::snprintf(name, sizeof name, "t = 0 (homogeneous)");
@@ -254,21 +279,20 @@ Figure fig14_bulb_average(const std::vector<BulbAverageSeries>& samples) {
 }
 
 Figure fig15_hydrometer(const std::vector<HydrometerSeries>& samples) {
-  return time_stack(
-      "Hydrometer test (ASTM D422)",
-      {against_time(samples, "Depth of the bulb's centre", axis("depth", "cm"),
-                    &HydrometerSeries::centre_depth_m, 100.0, LegendCorner::bottom_right),
-       against_time(samples, "Limiting diameter (Eq. 16)", diameter_axis(),
-                    &HydrometerSeries::diameter_m, 1e6),
-       against_time(samples, "Accumulated weight (Eq. 18)", percent_finer_axis(),
-                    &HydrometerSeries::percent_finer, 1.0)});
+  return time_stack("Hydrometer test (ASTM D422)",
+                    {against_time(samples, "Depth of the bulb's centre", axis("depth", "cm"),
+                                  &HydrometerSeries::centre_depth_m, 100.0),
+                     against_time(samples, "Limiting diameter (Eq. 16)", diameter_axis(),
+                                  &HydrometerSeries::diameter_m, 1e6),
+                     against_time(samples, "Accumulated weight (Eq. 18)", percent_finer_axis(),
+                                  &HydrometerSeries::percent_finer, 1.0)});
 }
 
 Figure fig16_buoyancy(const std::vector<BuoyancySeries>& samples) {
   return time_stack(
       "Buoyancy test",
       {against_time(samples, "Apparent mass of the sphere", axis("apparent mass", "g"),
-                    &BuoyancySeries::apparent_mass_kg, 1e3, LegendCorner::bottom_right),
+                    &BuoyancySeries::apparent_mass_kg, 1e3),
        against_time(samples, "Limiting diameter (Eq. 16)", diameter_axis(),
                     &BuoyancySeries::diameter_m, 1e6),
        against_time(samples, "Accumulated weight (Eq. 22)", percent_finer_axis(),
@@ -290,7 +314,6 @@ Figure fig18_granulometry(const std::vector<SampleGrading>& samples) {
     plot.title = s.sample;
     plot.x = axis("diameter", "µm", 1.0, 100.0, true);
     plot.y = percent_finer_axis();
-    plot.legend_corner = LegendCorner::top_left;
     PlotSeries truth(s.truth.name.empty() ? "true" : s.truth.name, s.truth.diameter_m,
                      s.truth.percent_finer, SeriesStyle::line);
     truth.x = scaled(truth.x, 1e6);

@@ -70,6 +70,11 @@ struct BulbAverageSeries {
 };
 Figure fig14_bulb_average(const std::vector<BulbAverageSeries>& samples);
 
+// Figs. 15-17: where every sample's curve is the same (the limiting diameter at a fixed depth
+// depends on time alone), a panel draws one black curve named kAllSamples and says so in its
+// title ("..., all samples").
+inline constexpr const char* kAllSamples = "all samples";
+
 // Fig. 15: the hydrometer's readings against time, one curve per sample.
 struct HydrometerSeries {
   std::string sample;

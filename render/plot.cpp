@@ -19,6 +19,7 @@
 #include <vtkPlotArea.h>
 #include <vtkPlotPoints.h>
 #include <vtkSVGExporter.h>
+#include <vtkStringArray.h>
 #include <vtkTable.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
@@ -30,6 +31,8 @@ namespace sedem::render {
 namespace {
 
 constexpr int kTitleHeight = 34;
+constexpr int kLeftMargin = 72, kBottomMargin = 46, kTopMargin = 28;
+constexpr int kLegendFont = 11;
 
 std::string identifier(const std::string& text) {
   std::string out;
@@ -52,11 +55,13 @@ std::string identifier(const std::string& text) {
   return out;
 }
 
-// Each distinct series name, in order of first appearance across the panels.
+// Each distinct name of a series without a colour of its own, in order of first appearance
+// across the panels.
 std::map<std::string, std::size_t> name_indices(const Figure& figure) {
   std::map<std::string, std::size_t> index;
   for (const auto& panel : figure.panels)
-    for (const auto& s : panel.series) index.emplace(s.name, index.size());
+    for (const auto& s : panel.series)
+      if (!s.color) index.emplace(s.name, index.size());
   return index;
 }
 
@@ -74,8 +79,109 @@ std::optional<std::pair<double, double>> log_range(const Plot& plot, bool x) {
   return std::pair{lo, hi};
 }
 
-void style_axis(vtkAxis* axis, PlotAxis spec, const Plot& plot, bool is_x) {
-  if (spec.log && !spec.range) spec.range = log_range(plot, is_x);
+// The data range of one axis over every series (bands included); log axes only positive values.
+std::pair<double, double> data_range(const Plot& plot, bool x, bool log) {
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (const auto& s : plot.series)
+    for (const auto* values : {x ? &s.x : &s.y, x ? &s.x : &s.y_low})
+      for (double v : *values)
+        if (std::isfinite(v) && (!log || v > 0)) lo = std::min(lo, v), hi = std::max(hi, v);
+  return {lo, hi};
+}
+
+// 1, 2 or 5 times a power of ten, nearest (in ratio) to a `target`-th of `span`.
+double nice_step(double span, int target) {
+  const double raw = span / target;
+  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+  double best = decade;
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (std::abs(std::log(m * decade / raw)) < std::abs(std::log(best / raw))) best = m * decade;
+  return best;
+}
+
+std::string tick_label(double v, int decimals) {
+  char buf[48];
+  if (std::abs(v) >= 1e6 && decimals == 0) {
+    std::snprintf(buf, sizeof buf, "%.3g", v);
+  } else {
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  }
+  std::string out = buf;
+  if (out.starts_with("-") && out.find_first_not_of("-0.") == std::string::npos) out.erase(0, 1);
+  return out;
+}
+
+}  // namespace
+
+AxisTicks axis_ticks(const Plot& plot, bool x) {
+  PlotAxis spec = x ? plot.x : plot.y;
+  AxisTicks t;
+  if (spec.log) {
+    const auto range = spec.range ? *spec.range : *log_range(plot, x);
+    t.range = range;
+    const double a = std::log10(range.first), b = std::log10(range.second);
+    const int first = int(std::ceil(a - 1e-9)), last = int(std::floor(b + 1e-9));
+    // Few decades: 1, 2 and 5 in each, so that the axis has at least three labels.
+    const bool fine = last - first < 2;
+    for (int k = first - 1; k <= last; ++k) {
+      for (double m : fine ? std::vector<double>{1, 2, 5} : std::vector<double>{1}) {
+        const double v = m * std::pow(10.0, k);
+        if (v < range.first * (1 - 1e-9) || v > range.second * (1 + 1e-9)) continue;
+        t.at.push_back(v);
+        // Arial has no superscript 4-9: 1e6 rather than 10 to the 6.
+        char label[32];
+        if (v >= 1e6) {
+          std::snprintf(label, sizeof label, "%ge%d", m, k);
+        } else {
+          std::snprintf(label, sizeof label, "%s",
+                        tick_label(v, std::max(0, -int(std::floor(std::log10(v) + 1e-9)))).c_str());
+        }
+        t.labels.push_back(label);
+      }
+    }
+    return t;
+  }
+  std::pair<double, double> range;
+  if (spec.range) {
+    range = *spec.range;
+  } else {
+    auto [lo, hi] = data_range(plot, x, false);
+    if (!(lo <= hi)) lo = 0, hi = 1;
+    if (hi - lo <= 1e-12 * std::max(1.0, std::abs(hi))) {
+      const double pad = std::max(0.5, 0.05 * std::abs(hi));
+      lo -= pad, hi += pad;
+    }
+    // A margin, so that no point sits on the frame (but no negative values for data that
+    // have none), then outward to whole steps.
+    const double margin = 0.03 * (hi - lo);
+    lo = lo >= 0 ? std::max(0.0, lo - margin) : lo - margin;
+    hi += margin;
+    const double step = nice_step(hi - lo, 6);
+    range = {std::floor(lo / step + 1e-9) * step, std::ceil(hi / step - 1e-9) * step};
+  }
+  if (!(range.second > range.first)) range.second = range.first + 1;
+  t.range = range;
+  const double span = range.second - range.first;
+  const double step = nice_step(span, 6);
+  int decimals = 0;  // as many as the step needs: 0.5 one, 5 none
+  while (decimals < 12 && std::abs(step * std::pow(10.0, decimals) -
+                                   std::round(step * std::pow(10.0, decimals))) > 1e-6)
+    ++decimals;
+  for (double k = std::ceil(range.first / step - 1e-9); k * step <= range.second + 1e-9 * span;
+       k += 1) {
+    t.at.push_back(k * step);
+    t.labels.push_back(tick_label(k * step, decimals));
+  }
+  // VTK 9.1's charts draw no curve at all on an axis whose span is below about 1 % of its
+  // values (1000 to 1008 kg/m³): the data are drawn relative to the axis' start instead,
+  // with the labels of the true values.
+  if (span < 0.05 * std::max(std::abs(range.first), std::abs(range.second))) t.offset = range.first;
+  return t;
+}
+
+namespace {
+
+void style_axis(vtkAxis* axis, const PlotAxis& spec, const AxisTicks& ticks) {
   axis->SetTitle(spec.title());
   axis->GetTitleProperties()->SetFontSize(13);
   axis->GetTitleProperties()->SetColor(0, 0, 0);
@@ -84,15 +190,21 @@ void style_axis(vtkAxis* axis, PlotAxis spec, const Plot& plot, bool is_x) {
   axis->GetLabelProperties()->SetColor(0, 0, 0);
   axis->GetLabelProperties()->SetFontFamilyToArial();
   axis->SetLogScale(spec.log);
-  if (spec.range) {
-    axis->SetBehavior(vtkAxis::FIXED);
-    axis->SetUnscaledRange(spec.range->first, spec.range->second);
-  } else {
-    axis->SetBehavior(vtkAxis::AUTO);
+  axis->SetBehavior(vtkAxis::FIXED);
+  axis->SetUnscaledRange(ticks.range.first - ticks.offset, ticks.range.second - ticks.offset);
+  // Our own ticks: labels that never repeat (their decimals follow the step) nor run
+  // together (decades only on a log axis of several decades).
+  auto positions = vtkSmartPointer<vtkDoubleArray>::New();
+  auto labels = vtkSmartPointer<vtkStringArray>::New();
+  for (std::size_t i = 0; i < ticks.at.size(); ++i) {
+    positions->InsertNextValue(spec.log ? std::log10(ticks.at[i]) : ticks.at[i] - ticks.offset);
+    labels->InsertNextValue(ticks.labels[i]);
   }
+  axis->SetCustomTickPositions(positions, labels);
 }
 
-vtkSmartPointer<vtkTable> series_table(const PlotSeries& s, bool log_x, bool log_y) {
+vtkSmartPointer<vtkTable> series_table(const PlotSeries& s, bool log_x, bool log_y, double x0,
+                                       double y0) {
   auto x = vtkSmartPointer<vtkDoubleArray>::New();
   x->SetName("x");
   auto y = vtkSmartPointer<vtkDoubleArray>::New();
@@ -102,8 +214,8 @@ vtkSmartPointer<vtkTable> series_table(const PlotSeries& s, bool log_x, bool log
     // A log axis cannot show zero or negative values, and VTK would reject the whole series.
     if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
     if ((log_x && s.x[i] <= 0) || (log_y && s.y[i] <= 0)) continue;
-    x->InsertNextValue(s.x[i]);
-    y->InsertNextValue(s.y[i]);
+    x->InsertNextValue(s.x[i] - x0);
+    y->InsertNextValue(s.y[i] - y0);
   }
   auto table = vtkSmartPointer<vtkTable>::New();
   table->AddColumn(x);
@@ -112,15 +224,16 @@ vtkSmartPointer<vtkTable> series_table(const PlotSeries& s, bool log_x, bool log
 }
 
 // A band's table: x, its lower and upper edges.
-vtkSmartPointer<vtkTable> band_table(const PlotSeries& s) {
+vtkSmartPointer<vtkTable> band_table(const PlotSeries& s, double x0, double y0) {
   auto table = vtkSmartPointer<vtkTable>::New();
   const char* names[] = {"x", "low", "high"};
   const std::vector<double>* values[] = {&s.x, &s.y_low, &s.y};
+  const double offsets[] = {x0, y0, y0};
   const std::size_t n = std::min({s.x.size(), s.y.size(), s.y_low.size()});
   for (int c = 0; c < 3; ++c) {
     auto a = vtkSmartPointer<vtkDoubleArray>::New();
     a->SetName(names[c]);
-    for (std::size_t i = 0; i < n; ++i) a->InsertNextValue((*values[c])[i]);
+    for (std::size_t i = 0; i < n; ++i) a->InsertNextValue((*values[c])[i] - offsets[c]);
     table->AddColumn(a);
   }
   return table;
@@ -134,12 +247,13 @@ vtkSmartPointer<vtkChartXY> make_chart(const Plot& plot,
   chart->GetTitleProperties()->SetBold(true);
   chart->GetTitleProperties()->SetColor(0, 0, 0);
   chart->GetTitleProperties()->SetFontFamilyToArial();
-  style_axis(chart->GetAxis(vtkAxis::BOTTOM), plot.x, plot, true);
-  style_axis(chart->GetAxis(vtkAxis::LEFT), plot.y, plot, false);
+  const auto xt = axis_ticks(plot, true), yt = axis_ticks(plot, false);
+  style_axis(chart->GetAxis(vtkAxis::BOTTOM), plot.x, xt);
+  style_axis(chart->GetAxis(vtkAxis::LEFT), plot.y, yt);
   for (const auto& s : plot.series) {
     if (s.style == SeriesStyle::band) {
       vtkPlot* area = chart->AddPlot(vtkChart::AREA);
-      area->SetInputData(band_table(s));
+      area->SetInputData(band_table(s, xt.offset, yt.offset));
       area->SetInputArray(0, "x");
       area->SetInputArray(1, "low");
       area->SetInputArray(2, "high");
@@ -151,7 +265,7 @@ vtkSmartPointer<vtkChartXY> make_chart(const Plot& plot,
     // A line needs two points; a series of one is drawn as a marker.
     const bool points = s.style == SeriesStyle::points || s.x.size() < 2;
     vtkPlot* p = chart->AddPlot(points ? vtkChart::POINTS : vtkChart::LINE);
-    p->SetInputData(series_table(s, plot.x.log, plot.y.log), 0, 1);
+    p->SetInputData(series_table(s, plot.x.log, plot.y.log, xt.offset, yt.offset), 0, 1);
     p->SetLabel(s.name);
     const auto rgb = s.color ? *s.color : palette_color(colors.at(s.name));
     p->SetColor(rgb[0], rgb[1], rgb[2], 255);
@@ -168,15 +282,14 @@ vtkSmartPointer<vtkChartXY> make_chart(const Plot& plot,
     }
   }
   chart->SetShowLegend(plot.legend && !plot.series.empty());
-  chart->GetLegend()->GetLabelProperties()->SetFontSize(11);
-  chart->GetLegend()->GetLabelProperties()->SetFontFamilyToArial();
-  chart->GetLegend()->GetLabelProperties()->SetColor(0, 0, 0);
-  const bool right = plot.legend_corner == LegendCorner::top_right ||
-                     plot.legend_corner == LegendCorner::bottom_right;
-  const bool top =
-      plot.legend_corner == LegendCorner::top_right || plot.legend_corner == LegendCorner::top_left;
-  chart->GetLegend()->SetHorizontalAlignment(right ? vtkChartLegend::RIGHT : vtkChartLegend::LEFT);
-  chart->GetLegend()->SetVerticalAlignment(top ? vtkChartLegend::TOP : vtkChartLegend::BOTTOM);
+  auto* legend = chart->GetLegend();
+  legend->GetLabelProperties()->SetFontSize(kLegendFont);
+  legend->GetLabelProperties()->SetFontFamilyToArial();
+  legend->GetLabelProperties()->SetColor(0, 0, 0);
+  // Outside the data, in the strip right of the plot area (placed by draw_figure).
+  legend->SetInline(false);
+  legend->SetHorizontalAlignment(vtkChartLegend::CUSTOM);
+  legend->SetVerticalAlignment(vtkChartLegend::CUSTOM);
   return chart;
 }
 
@@ -258,7 +371,42 @@ Figure single_plot(Plot plot, int width, int height) {
 namespace {
 
 // Draws `figure` into `view` (created by the caller at figure_size(figure)).
-void draw_figure(const Figure& figure, OffscreenView& view);
+// Draws `figure` into `view`; returns its charts, one per panel.
+std::vector<vtkSmartPointer<vtkChartXY>> draw_figure(const Figure& figure, OffscreenView& view);
+
+// The strip right of the plot areas that holds the widest legend of the figure (none without
+// legends): its longest entry, the line sample before it and padding.
+int legend_width(const Figure& figure) {
+  auto prop = vtkSmartPointer<vtkTextProperty>::New();
+  prop->SetFontFamilyToArial();
+  prop->SetFontSize(kLegendFont);
+  auto* renderer = vtkTextRenderer::GetInstance();
+  int widest = -1;
+  for (const auto& panel : figure.panels) {
+    if (!panel.legend) continue;
+    for (const auto& s : panel.series) {
+      if (s.style == SeriesStyle::band) continue;
+      int bbox[4] = {0, 0, 0, 0};
+      if (renderer) renderer->GetBoundingBox(prop, s.name, bbox, 72);
+      widest = std::max(widest, bbox[1] - bbox[0]);
+    }
+  }
+  return widest < 0 ? 16 : widest + 64;
+}
+
+// A legend's height as vtkChartLegend lays it out: per entry a line of text and its padding
+// (5 pixels), and the padding once more.
+int legend_height(const Plot& plot) {
+  auto prop = vtkSmartPointer<vtkTextProperty>::New();
+  prop->SetFontFamilyToArial();
+  prop->SetFontSize(kLegendFont);
+  int bbox[4] = {0, 0, 0, 12};
+  if (auto* renderer = vtkTextRenderer::GetInstance())
+    renderer->GetBoundingBox(prop, "Tg", bbox, 72);
+  const auto entries = std::count_if(plot.series.begin(), plot.series.end(),
+                                     [](const auto& s) { return s.style != SeriesStyle::band; });
+  return int(entries) * (bbox[3] - bbox[2] + 5) + 5;
+}
 
 std::pair<int, int> figure_size(const Figure& figure) {
   const int columns = std::clamp(figure.columns, 1, int(figure.panels.size()));
@@ -275,6 +423,28 @@ vtkSmartPointer<vtkImageData> render_figure(const Figure& figure) {
   OffscreenView view(width, height);
   draw_figure(figure, view);
   return view.capture();
+}
+
+std::vector<PanelLayout> figure_layout(const Figure& figure) {
+  if (figure.panels.empty()) throw std::invalid_argument("a figure needs at least one panel");
+  const auto [width, height] = figure_size(figure);
+  OffscreenView view(width, height);
+  const auto charts = draw_figure(figure, view);
+  view.capture();
+  std::vector<PanelLayout> out;
+  for (const auto& chart : charts) {
+    PanelLayout l;
+    const float* x0 = chart->GetAxis(vtkAxis::BOTTOM)->GetPoint1();
+    const float* x1 = chart->GetAxis(vtkAxis::BOTTOM)->GetPoint2();
+    const float* y1 = chart->GetAxis(vtkAxis::LEFT)->GetPoint2();
+    l.plot_area = {x0[0], x0[1], x1[0], y1[1]};
+    const auto& point = chart->GetLegend()->GetPointVector();
+    l.legend_shown = chart->GetShowLegend();
+    l.legend_inline = chart->GetLegend()->GetInline();
+    l.legend_point = {point.GetX(), point.GetY()};
+    out.push_back(l);
+  }
+  return out;
 }
 
 void write_figure_svg(const Figure& figure, const std::filesystem::path& file) {
@@ -295,21 +465,33 @@ void write_figure_svg(const Figure& figure, const std::filesystem::path& file) {
 
 namespace {
 
-void draw_figure(const Figure& figure, OffscreenView& view) {
+std::vector<vtkSmartPointer<vtkChartXY>> draw_figure(const Figure& figure, OffscreenView& view) {
+  std::vector<vtkSmartPointer<vtkChartXY>> charts;
   const int columns = std::clamp(figure.columns, 1, int(figure.panels.size()));
   const int rows = (int(figure.panels.size()) + columns - 1) / columns;
   const int title_h = figure.title.empty() ? 0 : kTitleHeight;
   const auto [width, height] = figure_size(figure);
   auto actor = vtkSmartPointer<vtkContextActor>::New();
   const auto colors = name_indices(figure);
+  const int legend_w = legend_width(figure);
   for (std::size_t i = 0; i < figure.panels.size(); ++i) {
     const int r = int(i) / columns, c = int(i) % columns;
     auto chart = make_chart(figure.panels[i], colors);
-    chart->SetAutoSize(false);
-    chart->SetSize(vtkRectf(float(c * figure.panel_width),
-                            float((rows - 1 - r) * figure.panel_height), float(figure.panel_width),
-                            float(figure.panel_height)));
+    // Every panel's plot area at the same place in its panel, so that stacked panels share
+    // their axes' ends: room on the left for tick labels and the axis title, below for the
+    // same, above for the panel's title, and on the right for the widest legend.
+    chart->SetLayoutStrategy(vtkChart::AXES_TO_RECT);
+    const float x0 = float(c * figure.panel_width),
+                y0 = float((rows - 1 - r) * figure.panel_height);
+    chart->SetSize(vtkRectf(x0 + kLeftMargin, y0 + kBottomMargin,
+                            float(figure.panel_width - kLeftMargin - legend_w),
+                            float(figure.panel_height - kBottomMargin - kTopMargin)));
+    // The legend's point is its lower-left corner: its top level with the plot area's.
+    chart->GetLegend()->SetPoint(vtkVector2f(
+        x0 + float(figure.panel_width - legend_w + 8),
+        y0 + float(figure.panel_height - kTopMargin - legend_height(figure.panels[i]))));
     actor->GetScene()->AddItem(chart);
+    charts.push_back(chart);
   }
   view.renderer()->AddActor(actor);
   if (title_h > 0) {
@@ -325,6 +507,7 @@ void draw_figure(const Figure& figure, OffscreenView& view) {
     text->SetDisplayPosition(width / 2, height - title_h / 2);
     view.renderer()->AddActor2D(text);
   }
+  return charts;
 }
 
 }  // namespace

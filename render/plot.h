@@ -48,15 +48,26 @@ struct PlotSeries {
   std::optional<std::array<unsigned char, 3>> color;
 };
 
-enum class LegendCorner { top_right, top_left, bottom_right, bottom_left };
-
 struct Plot {
   std::string title;
   PlotAxis x, y;
   std::vector<PlotSeries> series;
-  bool legend = true;
-  LegendCorner legend_corner = LegendCorner::top_right;  // inside the plot area
+  bool legend = true;  // right of the plot area, outside the data, its top level with it
 };
+
+// An axis' range and ticks as drawn: linear axes end on whole steps of 1, 2 or 5 times a
+// power of ten (unless the range is fixed) and label each tick with the decimals the step
+// needs, so no two labels are alike; log axes label their decades (1, 2 and 5 within them
+// when they span fewer than two), so labels never run together.
+struct AxisTicks {
+  std::pair<double, double> range;
+  std::vector<double> at;
+  std::vector<std::string> labels;
+  // Subtracted from the data before VTK draws them, when the span is small against the
+  // values; the labels keep the true values.
+  double offset = 0;
+};
+AxisTicks axis_ticks(const Plot& plot, bool x);
 
 // Several plots in one image: a grid of `columns` panels per row, filled row by row, with
 // the figure's title above. One panel is a single plot.
@@ -72,6 +83,16 @@ struct Figure {
 Figure single_plot(Plot plot, int width = 640, int height = 440);
 
 vtkSmartPointer<vtkImageData> render_figure(const Figure& figure);
+
+// Where a rendered figure's panels put their data and legends (pixels, origin bottom left):
+// the plot area between the axes, and the legend's anchor (its lower-left corner).
+struct PanelLayout {
+  std::array<float, 4> plot_area;  // x0, y0, x1, y1
+  bool legend_shown = false;
+  bool legend_inline = true;
+  std::array<float, 2> legend_point;
+};
+std::vector<PanelLayout> figure_layout(const Figure& figure);
 
 // CSV: two columns per series, "<series>:<x column>" and "<series>:<y column>", prefixed
 // with "<panel title>/" when the figure has more than one panel; shorter series leave their

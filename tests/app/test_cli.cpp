@@ -176,6 +176,29 @@ TEST(Cli, RenderTakesTheSameReadingsAgainFromTheSavedFiles) {
   EXPECT_TRUE(fs::exists(out / "figures/fig17_pipette.png"));
 }
 
+TEST(Cli, RenderOfRunsOfOneSceneNamesThemByTheKeyThatDiffers) {
+  const fs::path base = kOut / "render_sweep";
+  fs::remove_all(base);
+  std::string render = "render";
+  for (const char* count : {"300", "600"}) {
+    const fs::path out = base / count;
+    ASSERT_EQ(test::run_sedem("run " + kDemo + " --out " + out.string() +
+                              " --set sample.simulated_count=" + count +
+                              " --set run.end_time_s=120 --set output.frames=false --quiet")
+                  .status,
+              0);
+    render.append(" ").append(out.string());
+  }
+  render.append(" --out ").append((base / "figures").string()).append(" --quiet");
+  auto r = test::run_sedem(render);
+  ASSERT_EQ(r.status, 0) << r.output;
+  // Panels (and their CSV columns) named by the swept key, not "demo" twice.
+  const std::string csv = text_of(base / "figures/fig18_granulometry.csv");
+  EXPECT_NE(csv.find("sample.simulated_count=300/true:diameter_um"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("sample.simulated_count=600/true:diameter_um"), std::string::npos);
+  EXPECT_EQ(csv.find("demo/"), std::string::npos);
+}
+
 TEST(Cli, RenderRefusesAFolderThatIsNoRun) {
   auto r = test::run_sedem("render " + std::string(SEDEM_SOURCE_DIR) + "/scenes");
   EXPECT_EQ(r.status, 2);

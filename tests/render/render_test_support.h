@@ -2,6 +2,8 @@
 
 #include <filesystem>
 
+#include <vtkImageData.h>
+
 #include "core/engine/engine.h"
 
 #include "render/series_reader.h"
@@ -35,6 +37,9 @@ inline Snapshot lattice_snapshot() {
 
 }  // namespace sedem::test
 
+#include <algorithm>
+#include <array>
+#include <cstdlib>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -47,6 +52,21 @@ namespace sedem::test {
 // The (timestep, file) entries of a .pvd collection, in file order.
 inline std::vector<std::pair<double, std::string>> parse_pvd(const std::filesystem::path& pvd) {
   return render::read_pvd(pvd);
+}
+
+// Pixels within 12 levels of one colour in the columns [x0, x1) of an RGB image.
+inline int pixels_of(vtkImageData* image, std::array<unsigned char, 3> rgb, int x0, int x1) {
+  int dims[3];
+  image->GetDimensions(dims);
+  int n = 0;
+  for (int j = 0; j < dims[1]; ++j)
+    for (int i = std::max(x0, 0); i < std::min(x1, dims[0]); ++i) {
+      const auto* px = static_cast<unsigned char*>(image->GetScalarPointer(i, j, 0));
+      if (std::abs(px[0] - rgb[0]) < 12 && std::abs(px[1] - rgb[1]) < 12 &&
+          std::abs(px[2] - rgb[2]) < 12)
+        ++n;
+    }
+  return n;
 }
 
 inline std::string read_text(const std::filesystem::path& file) {

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <numeric>
 
@@ -59,26 +60,85 @@ TEST(MassBands, MatchesBaseline) {
   auto image = render::render_mass_bands(bands_figure());
   int dims[3];
   image->GetDimensions(dims);
-  EXPECT_EQ(dims[0], 2 * 230 + 110);
+  EXPECT_EQ(dims[0], 2 * 270 + 110);
   EXPECT_EQ(dims[1], 2 * 380 + 34);
   auto result =
       render::compare_with_baseline(image, test::baseline("mass_bands.png"), test::output_dir());
   EXPECT_TRUE(result.passed) << result.message;
 }
 
-TEST(MassBands, DarkestBandIsTheLargestShare) {
+// The grey at a depth fraction (0 bottom, 1 top) of the only panel's column.
+int grey_at(vtkImageData* image, double fraction) {
+  const double col_y0 = 26, col_h = 380 - 30 - col_y0;
+  const double col_x = 36 + 0.5 * 0.0635 * col_h / 0.457;  // middle of the column
+  return int(*static_cast<unsigned char*>(
+      image->GetScalarPointer(int(col_x), int(col_y0 + fraction * col_h), 0)));
+}
+
+TEST(MassBands, FullScaleIsBlackAndNoMassWhite) {
   // One panel, one band holding everything and one holding nothing: black and white.
   render::MassBandsFigure f;
   f.samples = {{"s", {render::ColumnState{}}}};
   f.samples[0].states[0].band_mass_fraction = {0.0, 1.0};
   f.insets.clear();
   auto image = render::render_mass_bands(f);
-  const double col_x = 14 + 0.5 * 0.0635 * (380 - 42) / 0.457;  // middle of the column
-  auto grey_at = [&](double y) {
-    return int(*static_cast<unsigned char*>(image->GetScalarPointer(int(col_x), int(y), 0)));
+  EXPECT_EQ(grey_at(image, 0.75), 255);  // upper band: no mass
+  EXPECT_EQ(grey_at(image, 0.25), 0);    // lower band: all of it
+}
+
+TEST(MassBands, SuspensionShowsBesideADenseBed) {
+  // 60 % of the mass in the bottom band, the rest spread over the 39 above: the scale is not
+  // set by the bed (which would leave the suspension white) but by the homogeneous share.
+  render::MassBandsFigure f;
+  f.samples = {{"s", {render::ColumnState{}}}};
+  auto& bands = f.samples[0].states[0].band_mass_fraction;
+  bands.assign(40, 0.4 / 39);
+  bands.back() = 0.6;
+  f.insets.clear();
+  EXPECT_DOUBLE_EQ(render::default_full_scale(f), 0.05);
+  auto image = render::render_mass_bands(f);
+  EXPECT_LT(grey_at(image, 0.5), 215);     // the suspension reads grey
+  EXPECT_GT(grey_at(image, 0.5), 150);     // but lighter than the bed
+  EXPECT_EQ(grey_at(image, 0.5 / 40), 0);  // the bed, past full scale: black
+}
+
+// `count` grains of 10 µm spread over the column, or (with `bed`) in its lowest 2 mm.
+render::ParticleDiscs spread_grains(int count, bool bed) {
+  render::ParticleDiscs p;
+  std::uint32_t state = 12345;
+  auto uniform = [&state] {
+    state = state * 1664525u + 1013904223u;
+    return double(state >> 8) / double(1u << 24);
   };
-  EXPECT_EQ(grey_at(12 + 0.75 * (380 - 42)), 255);  // upper band: no mass
-  EXPECT_EQ(grey_at(12 + 0.25 * (380 - 42)), 0);    // lower band: all of it
+  for (int i = 0; i < count; ++i) {
+    p.x.push_back((uniform() - 0.5) * 0.063);
+    p.y.push_back(bed ? 0.002 * uniform() : 0.457 * uniform());
+    p.diameter.push_back(10e-6);
+  }
+  return p;
+}
+
+TEST(MassBands, ZoomWindowsHoldGrainsAtAnyCount) {
+  using Where = render::ColumnInset::Where;
+  double previous = 1;
+  for (int count : {300, 3000, 30000}) {
+    const auto p = spread_grains(count, false);
+    for (auto where : {Where::top, Where::middle, Where::bottom}) {
+      const auto w = render::zoom_window(p, 0.457, 0.0635, {where, 40});
+      EXPECT_GE(w.grains, 15u) << count;
+      EXPECT_LE(w.grains, 100u) << count;
+    }
+    const auto w = render::zoom_window(p, 0.457, 0.0635, {Where::middle, 40});
+    EXPECT_LT(w.side, previous);  // more grains, a smaller window, a larger magnification
+    previous = w.side;
+  }
+  // Everything settled: the bottom window sits on the bed and holds grains, the top one none.
+  const auto bed = spread_grains(3000, true);
+  const auto bottom = render::zoom_window(bed, 0.457, 0.0635, {Where::bottom, 40});
+  EXPECT_LT(bottom.y0, 0.002);  // on the 2 mm bed
+  EXPECT_GE(bottom.grains, 15u);
+  EXPECT_LE(bottom.grains, 100u);
+  EXPECT_EQ(render::zoom_window(bed, 0.457, 0.0635, {Where::top, 40}).grains, 0u);
 }
 
 TEST(MassBands, BandsFromLayersAndParticles) {

@@ -122,5 +122,62 @@ TEST(Plot, SvgHoldsTheFigureAsVectorGraphics) {
   EXPECT_TRUE(std::filesystem::exists(png));
 }
 
+TEST(Plot, LegendsSitOutsideThePlotArea) {
+  render::Figure f;
+  f.columns = 2;
+  f.panels = {sample_plot(), sample_plot()};
+  const auto layout = render::figure_layout(f);
+  ASSERT_EQ(layout.size(), 2u);
+  for (const auto& l : layout) {
+    EXPECT_TRUE(l.legend_shown);
+    EXPECT_FALSE(l.legend_inline);
+    EXPECT_GT(l.legend_point[0], l.plot_area[2]);  // right of the x axis' end
+  }
+  // The right panel's legend stays inside its own panel.
+  EXPECT_LT(layout[1].legend_point[0], 2.0f * float(f.panel_width));
+}
+
+std::vector<std::string> labels_of(double lo, double hi, bool log) {
+  render::Plot p;
+  p.x = render::axis("x", "", lo, hi, log);
+  p.y = render::axis("y", "", 0.0, 1.0);
+  return render::axis_ticks(p, true).labels;
+}
+
+TEST(Plot, TickLabelsNeitherRepeatNorRunTogether) {
+  // A density axis 0.02 kg/m³ tall: VTK's own labels read 1012.41, 1012.41.
+  const auto narrow = labels_of(1012.40, 1012.42, false);
+  ASSERT_GE(narrow.size(), 3u);
+  for (std::size_t i = 1; i < narrow.size(); ++i) EXPECT_NE(narrow[i], narrow[i - 1]);
+  EXPECT_EQ(narrow.front(), "1012.400");
+  // A log time axis: decades only, no 20000 and 50000 beside 100000.
+  EXPECT_EQ(labels_of(10, 1e5, true),
+            (std::vector<std::string>{"10", "100", "1000", "10000", "100000"}));
+  EXPECT_EQ(labels_of(1, 10, true), (std::vector<std::string>{"1", "2", "5", "10"}));
+  EXPECT_EQ(labels_of(0, 110, false),
+            (std::vector<std::string>{"0", "20", "40", "60", "80", "100"}));
+}
+
+TEST(Plot, DrawsCurvesOnANarrowAxisFarFromZero) {
+  // 1000.0 to 1000.3 kg/m³ (a coarse sample's bulb average): VTK 9.1 alone draws nothing.
+  for (bool fixed : {false, true}) {
+    render::Plot p;
+    p.x = render::axis("time", "s", true);
+    p.y = render::axis("density", "kg/m³");
+    if (fixed) p.y.range = std::pair{999.5, 1000.8};
+    render::PlotSeries s("bulb", {}, {}, render::SeriesStyle::line_and_points);
+    for (double t : {120.0, 300.0, 900.0, 1800.0, 3600.0, 15000.0, 86400.0}) {
+      s.x.push_back(t);
+      s.y.push_back(1000 + 0.3 * std::exp(-t / 300));
+    }
+    s.color = std::array<unsigned char, 3>{255, 0, 0};
+    p.series = {s};
+    p.legend = false;
+    const auto image = render::render_figure(render::single_plot(p));
+    EXPECT_GT(test::pixels_of(image, {255, 0, 0}, 0, 640), 400) << fixed;
+    EXPECT_GT(render::axis_ticks(p, false).offset, 999.0);
+  }
+}
+
 }  // namespace
 }  // namespace sedem
