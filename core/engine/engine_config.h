@@ -32,7 +32,7 @@ struct IntegratorConfig {
   double fast_step_factor = 1e5;       // exponential: dt <= factor * min t_tr
   double crossing_fraction = 0.8;      // exponential: dt <= fraction * r / speed, every grain
   double max_step = 1.0;               // s, upper bound on any step
-  bool local_steps = false;            // exponential: each free grain on its own window
+  bool local_steps = true;             // exponential: each free grain on its own window
   double max_coast = 60.0;             // s, longest window of a coasting grain
   bool freeze_settled = true;          // freeze resting particles below every instrument
   std::int64_t threads = 0;            // 0: all cores
