@@ -80,6 +80,10 @@ void ColumnFigureObserver::observe(const Snapshot& snapshot) {
   states_.push_back(std::move(state));
 }
 
+std::filesystem::path replay_folder(const Scene& scene, const std::filesystem::path& out_dir) {
+  return scene.output.particles ? out_dir : out_dir / "replay";
+}
+
 RunObservers make_observers(const Scene& scene, const Sample& sample,
                             const std::filesystem::path& out_dir, ObserverStart start) {
   RunObservers r;
@@ -89,12 +93,6 @@ RunObservers make_observers(const Scene& scene, const Sample& sample,
     r.instruments = instruments.get();
     r.all.push_back(std::move(instruments));
   }
-  if (scene.output.particles && start.write_particles) {
-    std::vector<std::vector<double>> lists{every(scene.output.interval, scene.end_time)};
-    if (r.instruments) lists.push_back(r.instruments->wanted_times());
-    r.all.push_back(std::make_unique<ParticleSeriesObserver>(merge_times(lists), scene, out_dir,
-                                                             start.resume_from));
-  }
   if (scene.output.fields)
     r.all.push_back(std::make_unique<FieldsObserver>(scene, out_dir, start.resume_from));
   if (scene.output.frames) {
@@ -102,6 +100,17 @@ RunObservers make_observers(const Scene& scene, const Sample& sample,
     auto columns = std::make_unique<ColumnFigureObserver>(scene);
     r.columns = columns.get();
     r.all.push_back(std::move(columns));
+  }
+  if (start.write_particles) {
+    // The snapshots that observers which accumulate read are saved in any case: a resumed run
+    // replays them (particle files off: in replay/, removed when the run completes).
+    std::vector<std::vector<double>> lists;
+    for (const auto& o : r.all)
+      if (o->accumulates()) lists.push_back(o->wanted_times());
+    if (scene.output.particles) lists.push_back(every(scene.output.interval, scene.end_time));
+    if (!lists.empty())
+      r.all.push_back(std::make_unique<ParticleSeriesObserver>(
+          merge_times(lists), scene, replay_folder(scene, out_dir), start.resume_from));
   }
   return r;
 }

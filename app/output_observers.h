@@ -73,6 +73,10 @@ class ColumnFigureObserver : public Observer {
   std::vector<render::ColumnState> states_;
 };
 
+// Where a run keeps the particle snapshots it replays on resume: its particles.pvd series,
+// or replay/ when particle files are off (then removed once the run completes).
+std::filesystem::path replay_folder(const Scene& scene, const std::filesystem::path& out_dir);
+
 // The observers a scene asks for: an output that nothing asks for costs nothing.
 struct RunObservers {
   std::vector<std::unique_ptr<Observer>> all;

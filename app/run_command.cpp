@@ -79,8 +79,10 @@ Scene scene_of_run(const fs::path& dir, std::string& scene_file) {
 // resumed run's readings are those of a run that never stopped.
 void replay(const RunObservers& observers, const fs::path& dir, double until,
             std::size_t expected_particles) {
-  bool any = false;
-  for (const auto& o : observers.all) any = any || o->accumulates();
+  bool any = false;  // an accumulating observer wanted a snapshot before `until`
+  for (const auto& o : observers.all)
+    if (o->accumulates())
+      for (double t : o->wanted_times()) any = any || t < until;
   if (!any) return;
   for (const auto& [time, file] : render::read_pvd(dir / "particles.pvd")) {
     if (time >= until) break;
@@ -236,7 +238,7 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   }
   if (resuming) {
     try {
-      replay(run_observers, out, engine.time(), sample.particles.size());
+      replay(run_observers, replay_folder(scene, out), engine.time(), sample.particles.size());
     } catch (const std::exception& e) {
       std::cerr << "sedem: cannot resume: the saved series is damaged: " << e.what() << '\n';
       return exit_code::invalid_scene;
@@ -326,6 +328,10 @@ int run_in(const RunOptions& options, RunContext& ctx) {
     }
   } else if (status == exit_code::ok) {
     remove_checkpoint(out);
+    if (!scene.output.particles) {
+      std::error_code ignored;  // a leftover replay/ costs disk only; the record lists it
+      fs::remove_all(replay_folder(scene, out), ignored);
+    }
   }
   try {
     for (auto& o : observers) o->finish();

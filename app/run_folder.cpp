@@ -18,8 +18,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // The folders a run writes its series, frames and figures into.
-const std::set<std::string> kOutputFolders{"particles", "fields",  "hydrometer",
-                                           "frames",    "figures", "columns"};
+const std::set<std::string> kOutputFolders{"particles", "fields",  "hydrometer", "frames",
+                                           "figures",   "columns", "replay"};
 
 bool is_temporary(const fs::path& p) {
   return p.extension() == ".tmp";
