@@ -107,7 +107,11 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
       const int own = grid.level(i);
       for (std::uint32_t c = start[k], e = start[k + 1]; c < e; ++c) {
         const std::uint32_t j = list[c];
-        if ((frozen[i] && frozen[j]) || (grid.level(j) == own && origin[j] < oi)) continue;
+        if (frozen[i] && frozen[j]) continue;
+        // A same-level pair is taken once: from its moving side if one is frozen (a frozen
+        // particle's list may hold its coarser partners only), else from its lower sample index.
+        if (grid.level(j) == own && (frozen[i] != frozen[j] ? frozen[i] != 0 : origin[j] < oi))
+          continue;
         const double dx = x[j] - x[i], dy = y[j] - y[i];
         const double dist2 = dx * dx + dy * dy;
         const double rj = 0.5 * d[j], reach = ri + rj, rmin = std::min(ri, rj);

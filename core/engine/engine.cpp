@@ -258,7 +258,8 @@ void Engine::rebuild_lists() {
   x0_ = state_.x;
   y0_ = state_.y;
   grid_.build(n, x0_.data(), y0_.data(), search_.data());
-  pass_.build_lists(grid_, n, x0_.data(), y0_.data(), search_.data());
+  pass_.build_lists(grid_, n, x0_.data(), y0_.data(), search_.data(),
+                    local_ ? state_.frozen.data() : nullptr);
   lists_stale_ = false;
   ++stats_.list_builds;
 }
@@ -485,7 +486,8 @@ void Engine::load_checkpoint(const std::string& path) {
   // The lists as they were: built from the saved build positions, in the saved order.
   if (!lists_stale_) {
     grid_.build(state_.size(), x0_.data(), y0_.data(), search_.data());
-    pass_.build_lists(grid_, state_.size(), x0_.data(), y0_.data(), search_.data());
+    pass_.build_lists(grid_, state_.size(), x0_.data(), y0_.data(), search_.data(),
+                      local_ ? state_.frozen.data() : nullptr);
   }
   synced_step_ = -1;
 }

@@ -17,7 +17,7 @@ void ForcePass::configure(const ForceModel& model, int threads) {
 }
 
 void ForcePass::build_lists(const NeighbourGrid& grid, std::size_t n, const double* x0,
-                            const double* y0, const double* radius) {
+                            const double* y0, const double* radius, const std::uint8_t* frozen) {
   const auto& order = grid.order();
   list_start_.resize(n + 1);
   list_start_[0] = 0;
@@ -29,13 +29,16 @@ void ForcePass::build_lists(const NeighbourGrid& grid, std::size_t n, const doub
     for (std::size_t k = 0; k < n; ++k) {
       const std::uint32_t i = order[k];
       std::uint32_t count = 0;
-      grid.for_each_candidate(i, x0, y0, radius, [&](std::uint32_t j) {
-        const double dx = x0[j] - x0[i], dy = y0[j] - y0[i], reach = radius[i] + radius[j];
-        if (dx * dx + dy * dy < reach * reach) {
-          mine.push_back(j);
-          ++count;
-        }
-      });
+      grid.for_each_candidate(
+          i, x0, y0, radius,
+          [&](std::uint32_t j) {
+            const double dx = x0[j] - x0[i], dy = y0[j] - y0[i], reach = radius[i] + radius[j];
+            if (dx * dx + dy * dy < reach * reach) {
+              mine.push_back(j);
+              ++count;
+            }
+          },
+          frozen && frozen[i]);
       list_start_[k + 1] = count;
     }
   }

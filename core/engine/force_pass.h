@@ -40,8 +40,11 @@ class ForcePass {
   // Candidate lists (Verlet): for each particle, in the grid's order, the partners found by
   // the grid within radius[i] + radius[j] of the positions (x0, y0). Valid while no particle
   // has moved more than half the margin the radii carry beyond the interaction range.
+  // With `frozen` (no force pass: the projection alone reads the lists), a frozen particle
+  // lists its coarser partners only: a same-level pair of a frozen and a moving particle is
+  // found from the moving side, and a bed of frozen grains costs little.
   void build_lists(const NeighbourGrid& grid, std::size_t n, const double* x0, const double* y0,
-                   const double* radius);
+                   const double* radius, const std::uint8_t* frozen = nullptr);
   void run(const EngineState& s, const NeighbourGrid& grid, const PairHistory& old_springs,
            PairHistory& new_springs, double dt, ForceAccumulators& out, PassFacts& facts);
   std::size_t bytes() const;

@@ -27,9 +27,10 @@ class NeighbourGrid {
   // within radius[i] + the level's largest radius of i, and possibly for some farther j of
   // those levels (the caller tests the distance). Same-level pairs are thus seen from both
   // sides; cross-level pairs only from the finer side.
+  // With `coarser_only`, the levels above i's own only (the cross-level pairs of i).
   template <class Visit>
   void for_each_candidate(std::size_t i, const double* x, const double* y, const double* radius,
-                          Visit&& visit) const;
+                          Visit&& visit, bool coarser_only = false) const;
 
   std::uint8_t level(std::size_t i) const { return level_[i]; }
   // Particles in bucket order: iterating in this order keeps neighbours cache-local.
@@ -69,10 +70,11 @@ inline std::int64_t NeighbourGrid::row(int level, double y) const {
 
 template <class Visit>
 void NeighbourGrid::for_each_candidate(std::size_t i, const double* x, const double* y,
-                                       const double* radius, Visit&& visit) const {
+                                       const double* radius, Visit&& visit,
+                                       bool coarser_only) const {
   const int own = level_[i];
   const double xi = x[i], yi = y[i];
-  for (int l = own; l < levels_; ++l) {
+  for (int l = coarser_only ? own + 1 : own; l < levels_; ++l) {
     const double reach = level_max_radius_[l];
     if (reach < 0) continue;  // empty level
     const double r = reach + radius[i];
