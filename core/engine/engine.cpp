@@ -124,7 +124,8 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
 
   const Cylinder& cyl = scene_.cylinder;
   grid_.configure(dmin * (1 + reach + model_.skin + margin_),
-                  dmax * (1 + reach + model_.skin + margin_), cyl.half_width(), cyl.height);
+                  dmax * (1 + reach + model_.skin + margin_), cyl.half_width(), cyl.height,
+                  threads_);
   voidage_.configure(scene_.forces.voidage_cell, cyl.half_width(), cyl.height, cyl.slab_thickness(),
                      scene_.forces.min_voidage, threads_);
   pass_.configure(model_, threads_);

@@ -7,7 +7,8 @@
 namespace sedem {
 
 void NeighbourGrid::configure(double min_search_diameter, double max_search_diameter,
-                              double half_width, double height) {
+                              double half_width, double height, int threads) {
+  threads_ = std::max(1, threads);
   cell0_ = min_search_diameter;
   half_width_ = half_width;
   height_ = height;
@@ -38,7 +39,8 @@ void NeighbourGrid::build(std::size_t n, const double* x, const double* y, const
     start_.assign(buckets + 1, 0);
   }
   std::fill(level_max_radius_.begin(), level_max_radius_.end(), -1.0);
-#pragma omp parallel for schedule(static) if (n >= 2048)
+  // The engine's thread count: a serial engine (local steps) must not wake a thread pool.
+#pragma omp parallel for schedule(static) num_threads(threads_) if (threads_ > 1 && n >= 2048)
   for (std::size_t i = 0; i < n; ++i) {
     int l = 0;
     while (l + 1 < levels_ && cell_[l] < 2 * radius[i]) ++l;

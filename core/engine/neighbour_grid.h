@@ -20,7 +20,7 @@ class NeighbourGrid {
   // `radius[i]` is the search radius of i (its radius plus half the interaction range);
   // i and j may interact when their distance is below radius[i] + radius[j].
   void configure(double min_search_diameter, double max_search_diameter, double half_width,
-                 double height);
+                 double height, int threads = 1);
   void build(std::size_t n, const double* x, const double* y, const double* radius);
 
   // Calls visit(j), once, for every j != i stored in a level >= level(i) whose cell lies
@@ -45,7 +45,7 @@ class NeighbourGrid {
   std::int64_t column(int level, double x) const;
   std::int64_t row(int level, double y) const;
 
-  int levels_ = 1;
+  int levels_ = 1, threads_ = 1;
   double cell0_ = 1, half_width_ = 0, height_ = 0;
   std::vector<double> cell_, inverse_cell_;
   std::vector<std::int64_t> columns_, rows_;
