@@ -8,6 +8,7 @@
 // cells, each box listed in every cell it covers, so a query costs the few cells a box spans
 // however many grains there are; an update touches only the grain's own cells.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -17,6 +18,9 @@ namespace sedem {
 struct Box {
   double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
   bool overlaps(const Box& b) const { return x0 < b.x1 && b.x0 < x1 && y0 < b.y1 && b.y0 < y1; }
+  Box merged(const Box& b) const {
+    return {std::min(x0, b.x0), std::max(x1, b.x1), std::min(y0, b.y0), std::max(y1, b.y1)};
+  }
 };
 
 class BoxRegistry {

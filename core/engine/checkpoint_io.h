@@ -1,7 +1,7 @@
 #pragma once
 
 // Raw reads and writes of the engine's checkpoint: vectors carry their length, which must match
-// the vector they are read into (sized beforehand from the sample).
+// the vector they are read into (sized beforehand from the sample) or stay within a bound.
 
 #include <cstdint>
 #include <istream>
@@ -23,6 +23,16 @@ void read_vector(std::istream& in, std::vector<T>& v) {
   std::uint64_t n = 0;
   in.read(reinterpret_cast<char*>(&n), sizeof n);
   if (!in || n != v.size()) throw std::runtime_error("checkpoint does not match this sample");
+  in.read(reinterpret_cast<char*>(v.data()), std::streamsize(n * sizeof(T)));
+}
+
+// A vector whose length the sample only bounds (at most `most` entries).
+template <class T>
+void read_vector_upto(std::istream& in, std::vector<T>& v, std::uint64_t most) {
+  std::uint64_t n = 0;
+  in.read(reinterpret_cast<char*>(&n), sizeof n);
+  if (!in || n > most) throw std::runtime_error("checkpoint does not match this sample");
+  v.resize(n);
   in.read(reinterpret_cast<char*>(v.data()), std::streamsize(n * sizeof(T)));
 }
 

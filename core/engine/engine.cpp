@@ -154,6 +154,12 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
       scene_.integrator.freeze_settled && model_.contact ? lowest_measured_height(scene_) : 0.0;
   // Without the force pass, the freeze check reads the contacts the projection marks.
   if (!pass_needed_ && freeze_height_ > 0) forces_.stiffness.resize(n);
+  // Below the lowest instrument nothing rises back into any instrument's reach: a grain that
+  // falls there can leave the dynamics (local steps; only where some instrument reads).
+  const auto& in = scene_.instruments;
+  if (local_ && model_.contact && scene_.integrator.retire_below &&
+      (in.hydrometer || in.buoyancy || in.pipette))
+    retire_height_ = std::max(0.0, lowest_measured_height(scene_));
   if (local_) {
     start_local();
     return;
@@ -183,8 +189,9 @@ const Particles& Engine::particles() const {
     if (local_) {
       for (std::uint32_t id = 0; id < kind_.size(); ++id) {
         if (kind_[id] == kMoving || kind_[id] == kFrozen) continue;
-        const FreeFlight::Point q = kind_[id] == kCoasting
-                                        ? coasting_at(id, time_)
+        const FreeFlight::Point q = kind_[id] == kCoasting ? coasting_at(id, time_)
+                                    : kind_[id] == kRetired
+                                        ? retired_at(id, time_)
                                         : FreeFlight::Point{flight_[id].x, flight_[id].y, 0, 0};
         p.x[id] = q.x;
         p.y[id] = q.y;
@@ -370,7 +377,8 @@ std::size_t Engine::bytes() const {
   b += grid_.bytes() + voidage_.bytes() + pass_.bytes() + springs_.bytes() + next_springs_.bytes();
   b += integrator_->bytes();
   b += cap(kind_) + cap(flight_) + cap(t0_) + cap(t1_) + cap(member_) + cap(deposit_cell_) +
-       cap(syncs_) + cap(near_) + cap(wake_) + boxes_.bytes();
+       cap(syncs_) + cap(near_) + cap(wake_) + boxes_.bytes() + cap(land_y_) + cap(bed_) +
+       cap(ahead_slot_) + cap(ahead_) + cap(widened_);
   return b;
 }
 

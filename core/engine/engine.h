@@ -46,6 +46,7 @@ struct EngineStats {
   // Local time stepping: coasting windows taken, and grains that left or joined the common step.
   std::int64_t windows = 0, engaged = 0, released = 0;
   std::size_t members = 0;  // grains on the common step at the last step (frozen included)
+  std::size_t retired = 0;  // grains that fell below every instrument onto the coarse bed
 };
 
 class Engine {
@@ -78,6 +79,8 @@ class Engine {
   // window ended unlooked-at, two boxes overlapping that must not), or "" (for tests).
   std::string local_violation() const;
   double freeze_height() const { return freeze_height_; }
+  // With local steps: below this height grains leave the dynamics for the coarse bed (0: none).
+  double retire_height() const { return retire_height_; }
   // Heap bytes held by the engine, its copy of the sample included.
   std::size_t bytes() const;
   // Kinetic energy of translation and rotation, J (a diagnostic for tests and benchmarks).
@@ -99,6 +102,9 @@ class Engine {
   void settle_members();
   void index_members();
   void move_deposit(std::uint32_t id, double x, double y);
+  void retire(std::uint32_t id, double t, const FreeFlight::Point& p);
+  void retire_members();
+  FreeFlight::Point retired_at(std::uint32_t id, double t) const;
   Box member_box(std::size_t k) const;
   void save_local(std::ostream& out) const;
   void load_local(std::istream& in);
@@ -135,8 +141,9 @@ class Engine {
 
   // Local time stepping: each grain is coasting (on its exact free trajectory `flight_` from
   // t0_ until t1_), a member of the common step (in state_, at index member_), or settled (a
-  // frozen grain no member can reach, kept out of state_). See engine_local.cpp.
-  enum : std::uint8_t { kCoasting = 0, kMoving = 1, kFrozen = 2, kSettled = 3 };
+  // frozen grain no member can reach, kept out of state_), or retired (below every instrument,
+  // falling on flight_ from t0_ onto the coarse bed at height land_y_). See engine_local.cpp.
+  enum : std::uint8_t { kCoasting = 0, kMoving = 1, kFrozen = 2, kSettled = 3, kRetired = 4 };
   bool local_ = false;
   bool members_changed_ = false;
   std::vector<std::uint8_t> kind_;
@@ -152,10 +159,16 @@ class Engine {
     Box before, after;
     bool widened;
   };
-  std::vector<Ahead> ahead_;  // synced within this step, with the box they had
+  std::vector<Ahead> ahead_;               // synced within this step, with the box they had
+  std::vector<std::uint32_t> ahead_slot_;  // per grain: its latest entry in ahead_
+  std::vector<Ahead> widened_;  // synced ahead of a shortened step: boxes to narrow later
   DragEvaluator drag_;
   double registry_cell_ = 1e-3, travel_ = 1e-3;
   std::size_t settled_ = 0;
+  double retire_height_ = 0;    // 0: no grain retires
+  std::vector<double> land_y_;  // retired grains: the height of their centre on the bed
+  std::vector<double> bed_;     // the coarse bed: the height of each column's top
+  double bed_column_ = 1e-4;    // the columns' width
 };
 
 }  // namespace sedem

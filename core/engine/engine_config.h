@@ -35,7 +35,8 @@ struct IntegratorConfig {
   bool local_steps = true;             // exponential: each free grain on its own window
   double max_coast = 60.0;             // s, longest window of a coasting grain
   bool freeze_settled = true;          // freeze resting particles below every instrument
-  std::int64_t threads = 0;            // 0: all cores
+  bool retire_below = true;  // local steps: grains below every instrument land analytically
+  std::int64_t threads = 0;  // 0: all cores
 };
 
 void describe(ForcesConfig& config, Schema& schema);

@@ -26,11 +26,17 @@
 // grain (each sync or member step moves the grain's deposit when it changes cell), instead of
 // being computed anew each step. The scheme is serial: its work is in syncs of O(log n) each,
 // taken in one order, so a run is the same whatever the thread count.
+//
+// Below the lowest instrument (integrator.retire_below_instruments) a grain *retires*: nothing
+// there can rise back into an instrument's reach, so it leaves the dynamics and falls freely
+// onto a coarse bed (columns one largest grain wide, each raised by the area of the grains
+// that land in it at a packing of kBedPacking), where it is drawn without contacts.
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <istream>
+#include <numbers>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -50,6 +56,7 @@ constexpr double kConverged = 1e-3;  // relative gap to the terminal velocity of
 constexpr double kResponses = 8.0;   // response times of a window still converging
 constexpr double kTravel = 0.5;      // longest travel of a window, in mean spacings
 constexpr std::int64_t kReleaseEvery = 16;
+constexpr double kBedPacking = 0.8;  // area fraction of the coarse bed (discs packed at random)
 constexpr std::uint32_t kNoMember = 0xFFFFFFFF;
 
 using Sync = std::pair<double, std::uint32_t>;
@@ -153,6 +160,49 @@ void Engine::move_deposit(std::uint32_t id, double x, double y) {
   voidage_.deposit(deposit_cell_[id], -volume);
   voidage_.deposit(c, volume);
   deposit_cell_[id] = std::uint32_t(c);
+}
+
+// Grain id (coasting, or taken out of the members) leaves the dynamics at p at time t: it falls
+// freely from there onto the top of its column of the coarse bed, which rises by its area.
+void Engine::retire(std::uint32_t id, double t, const FreeFlight::Point& p) {
+  const double r = 0.5 * sample_.particles.diameter[id];
+  const double hw = model_.half_width;
+  const std::size_t columns = bed_.size();
+  const auto c = std::size_t(std::clamp((p.x + hw) / bed_column_, 0.0, double(columns - 1)));
+  const double land = std::min(p.y, bed_[c] + r);
+  bed_[c] += std::numbers::pi * r * r / (bed_column_ * kBedPacking);
+  flight_[id] = flight_of(id, p);
+  t0_[id] = t;
+  t1_[id] = HUGE_VAL;  // its heap entry, if any, is stale
+  land_y_[id] = land;
+  kind_[id] = kRetired;
+  if (model_.contact) boxes_.clear(id);
+  move_deposit(id, p.x, land);
+  ++stats_.retired;
+}
+
+FreeFlight::Point Engine::retired_at(std::uint32_t id, double t) const {
+  const FreeFlight::Point q = flight_[id].at(std::max(0.0, t - t0_[id]));
+  if (q.y > land_y_[id]) return q;
+  return {q.x, land_y_[id], 0, 0};
+}
+
+// Members (moving or frozen) whose disc is wholly below the retirement height retire.
+void Engine::retire_members() {
+  wake_.clear();
+  for (std::size_t k = 0; k < state_.size(); ++k)
+    if (state_.y[k] + 0.5 * state_.diameter[k] < retire_height_) wake_.push_back(state_.origin[k]);
+  std::sort(wake_.begin(), wake_.end());
+  for (std::uint32_t id : wake_) {
+    const std::size_t k = member_[id];
+    const bool frozen = state_.frozen[k] != 0;
+    const FreeFlight::Point p{state_.x[k], state_.y[k], frozen ? 0.0 : state_.vx[k],
+                              frozen ? 0.0 : state_.vy[k]};
+    remove_member(k);
+    member_[id] = kNoMember;
+    retire(id, time_, p);
+  }
+  wake_.clear();
 }
 
 // Grain id joins the common step at p (at the members' time): appended to the state, its box
@@ -302,6 +352,13 @@ void Engine::start_local() {
       std::sqrt(2 * cyl.half_width() * cyl.height / double(std::max<std::size_t>(n, 1)));
   travel_ = kTravel * spacing;
   registry_cell_ = std::max(spacing, 4 * dmax);
+  land_y_.assign(n, 0.0);
+  ahead_slot_.assign(n, kNoMember);
+  widened_.clear();
+  bed_column_ = std::max(dmax, 1e-9);
+  bed_.assign(std::max<std::size_t>(1, std::size_t(std::ceil(2 * cyl.half_width() / bed_column_))),
+              0.0);
+  stats_.retired = 0;
   if (model_.contact) boxes_.configure(registry_cell_, cyl.half_width(), cyl.height, n);
   if (model_.drag == DragLaw::di_felice) {
     voidage_.compute(n, state_.x.data(), state_.y.data(), state_.diameter.data(),
@@ -325,8 +382,10 @@ void Engine::start_local() {
   x0_.clear();
   y0_.clear();
   forces_.stiffness.clear();
+  for (std::uint32_t id = 0; id < n; ++id)
+    if (start[id].y + 0.5 * s.diameter[id] < retire_height_) retire(id, 0.0, start[id]);
   for (std::uint32_t id = 0; id < n; ++id) {
-    if (kind_[id] != kCoasting) continue;  // engaged by a neighbour already
+    if (kind_[id] != kCoasting) continue;  // engaged by a neighbour already, or retired
     if (coast(id, 0.0, start[id], true)) continue;
     engage(id, start[id], false);
     wake_around(kNoMember);
@@ -362,11 +421,25 @@ void Engine::step_local(double limit) {
       const FreeFlight::Point p = flight_[id].at(t - t0_[id]);
       if (!std::isfinite(p.x + p.y + p.vx + p.vy))
         throw InstabilityError(sample_.particles.id[id], t, "position", p.x);
-      move_deposit(id, p.x, p.y);
       stats_.particle_steps += 1;
+      if (p.y + 0.5 * sample_.particles.diameter[id] < retire_height_) {
+        retire(id, t, p);
+        continue;
+      }
+      move_deposit(id, p.x, p.y);
       const Box before = model_.contact ? boxes_.box(id) : Box{};
+      const double t0_before = t0_[id];
       if (coast(id, t, p, true)) {
-        if (model_.contact) ahead_.push_back({id, t, before, boxes_.box(id), false});
+        if (model_.contact) {
+          // Synced ahead twice within the step: its path from the members' time on lies in
+          // the box it had before the first of the two syncs and in the window between.
+          Box from = before;
+          const std::uint32_t slot = ahead_slot_[id];
+          if (slot < ahead_.size() && ahead_[slot].id == id && ahead_[slot].time == t0_before)
+            from = ahead_[slot].before.merged(before);
+          ahead_slot_[id] = std::uint32_t(ahead_.size());
+          ahead_.push_back({id, t, from, boxes_.box(id), false});
+        }
         continue;
       }
       t1_[id] = HUGE_VAL;  // its heap entry, if any, is stale
@@ -379,11 +452,7 @@ void Engine::step_local(double limit) {
     // until their next sync. (Taken before the new members' boxes look for what they reach.)
     for (Ahead& a : ahead_) {
       if (a.widened || kind_[a.id] != kCoasting || t0_[a.id] != a.time) continue;
-      const Box& now = a.after;
-      boxes_.set(a.id,
-                 Box{std::min(now.x0, a.before.x0), std::max(now.x1, a.before.x1),
-                     std::min(now.y0, a.before.y0), std::max(now.y1, a.before.y1)},
-                 kCoasting);
+      boxes_.set(a.id, a.after.merged(a.before), kCoasting);
       a.widened = true;
     }
     for (std::uint32_t id : failed_)
@@ -399,10 +468,16 @@ void Engine::step_local(double limit) {
     // Syncs still due before the new target are taken in the next round: no window may end
     // unlooked-at while the members step past it.
   }
-  // Those synced within the step after all need their new box only.
+  // Those synced within the step after all need their new box only; the others once the
+  // members have passed their sync (until then a grain synced after them may be where their
+  // old box was, which is what the widened boxes allow).
   for (const Ahead& a : ahead_)
-    if (a.widened && a.time <= target && kind_[a.id] == kCoasting && t0_[a.id] == a.time)
-      boxes_.set(a.id, a.after, kCoasting);
+    if (a.widened && kind_[a.id] == kCoasting && t0_[a.id] == a.time) {
+      if (a.time <= target)
+        boxes_.set(a.id, a.after, kCoasting);
+      else
+        widened_.push_back(a);
+    }
 
   if (moving && target > time_) {
     if (lists_stale_) {
@@ -429,10 +504,22 @@ void Engine::step_local(double limit) {
   stats_.last_step = target - time_;
   time_ = target;
   stats_.steps += 1;
+  if (!widened_.empty()) {
+    std::size_t kept = 0;
+    for (const Ahead& a : widened_) {
+      if (kind_[a.id] != kCoasting || t0_[a.id] != a.time) continue;  // synced again since
+      if (a.time <= time_)
+        boxes_.set(a.id, a.after, kCoasting);
+      else
+        widened_[kept++] = a;
+    }
+    widened_.resize(kept);
+  }
 
   if (moving) {
     // Which members touch something, from this step's projection, before any joins or leaves.
     if (stats_.steps % kReleaseEvery == 0) integrator_->mark_touching(forces_.stiffness);
+    if (retire_height_ > 0) retire_members();
     // Members that used their allowance take a new box; whatever it reaches joins them.
     for (std::size_t k = 0; k < state_.size(); ++k) {
       if (state_.frozen[k]) continue;
@@ -475,6 +562,13 @@ void Engine::save_local(std::ostream& out) const {
       }
   write_vector(out, boxes);
   write_vector(out, kinds);
+  write_vector(out, land_y_);
+  write_vector(out, bed_);
+  std::vector<double> widened;  // id, sync time, the window's box (the old one is in boxes)
+  for (const Ahead& a : widened_)
+    widened.insert(widened.end(),
+                   {double(a.id), a.time, a.after.x0, a.after.x1, a.after.y0, a.after.y1});
+  write_vector(out, widened);
 }
 
 void Engine::load_local(std::istream& in) {
@@ -490,11 +584,26 @@ void Engine::load_local(std::istream& in) {
   std::vector<std::uint8_t> kinds(kind_.size());
   read_vector(in, boxes);
   read_vector(in, kinds);
+  read_vector(in, land_y_);
+  read_vector(in, bed_);
+  std::vector<double> widened;
+  read_vector_upto(in, widened, 6 * std::uint64_t(kind_.size()));
+  widened_.clear();
+  for (std::size_t k = 0; k + 6 <= widened.size(); k += 6) {
+    const double id = widened[k];
+    if (!(id >= 0 && id < double(kind_.size())))
+      throw std::runtime_error("damaged checkpoint: a widened box names no grain");
+    widened_.push_back({std::uint32_t(id), widened[k + 1], Box{},
+                        Box{widened[k + 2], widened[k + 3], widened[k + 4], widened[k + 5]}, true});
+  }
+  if (land_y_.size() != kind_.size() || bed_.empty())
+    throw std::runtime_error("damaged checkpoint: the coarse bed does not fit the sample");
   for (std::size_t id = 0; id < kind_.size(); ++id) {
     const FreeFlight& f = flight_[id];
     const bool finite = std::isfinite(f.x + f.y + f.vx + f.vy + f.rate + f.ux + f.uy + t0_[id]) &&
                         !std::isnan(t1_[id]) && f.rate >= 0;
-    if (kind_[id] > kSettled || !finite || deposit_cell_[id] >= voidage_.cell_count() ||
+    if (kind_[id] > kRetired || !finite || !std::isfinite(land_y_[id]) ||
+        deposit_cell_[id] >= voidage_.cell_count() ||
         (kinds[id] != BoxRegistry::kNone && kinds[id] > kSettled))
       throw std::runtime_error("damaged checkpoint: grain " + std::to_string(id) +
                                " has a bad local-step state");
@@ -530,17 +639,22 @@ std::string Engine::local_violation() const {
   auto where = [&](std::uint32_t id) {
     if (kind_[id] == kCoasting) return coasting_at(id, time_);
     if (kind_[id] == kSettled) return FreeFlight::Point{flight_[id].x, flight_[id].y, 0, 0};
+    if (kind_[id] == kRetired) return retired_at(id, time_);
     const std::size_t k = member_[id];
     return FreeFlight::Point{state_.x[k], state_.y[k], 0, 0};
   };
   auto name = [&](std::uint32_t id) {
-    static const char* const kinds[] = {"coasting", "moving", "frozen", "settled"};
+    static const char* const kinds[] = {"coasting", "moving", "frozen", "settled", "retired"};
     return "grain " + std::to_string(id) + " (" + kinds[kind_[id]] + ")";
   };
   for (std::uint32_t id = 0; id < n; ++id) {
     if (kind_[id] == kCoasting && t1_[id] < time_)
       return name(id) + ": its window ended at " + std::to_string(t1_[id]) + " s, before " +
              std::to_string(time_) + " s";
+    if (kind_[id] == kRetired) {
+      if (boxes_.has(id)) return name(id) + " holds a box";
+      continue;
+    }
     const FreeFlight::Point p = where(id);
     const double r = 0.5 * s.diameter[id];
     const Box& b = boxes_.box(id);
@@ -548,6 +662,7 @@ std::string Engine::local_violation() const {
       return name(id) + " is outside its box";
   }
   for (std::uint32_t id = 0; id < n; ++id) {
+    if (kind_[id] == kRetired) continue;
     std::string found;
     boxes_.overlapping(boxes_.box(id), id, [&](std::uint32_t j) {
       const int a = kind_[id], b = kind_[j];

@@ -50,12 +50,13 @@ std::vector<Grain> scattered(int count, double x0, double x1, double y0, double 
   return g;
 }
 
-// A scene with the given drag and integrator, nothing frozen, one thread unless told.
+// A scene with the given drag and integrator, nothing frozen or retired, one thread unless told.
 inline Scene scene_with(const std::string& drag, const std::string& method, int threads = 1) {
   Scene scene;
   scene.forces.drag = drag;
   scene.integrator.method = method;
   scene.integrator.freeze_settled = false;
+  scene.integrator.retire_below = false;
   scene.integrator.threads = threads;
   return scene;
 }
