@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "core/engine/checkpoint_io.h"
+#include "core/engine/simd_state.h"
 #include "core/physics/stokes.h"
 
 namespace sedem {
@@ -215,6 +216,7 @@ void Engine::advance_to(double t) {
 }
 
 void Engine::step(double limit) {
+  clean_simd_state();
   if (local_) {
     step_local(limit);
     return;

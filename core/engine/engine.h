@@ -91,7 +91,11 @@ class Engine {
   // Local time stepping (engine_local.cpp).
   void start_local();
   void step_local(double limit);
-  bool coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit);
+  bool coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit,
+             Box* needed = nullptr);
+  bool make_room(std::uint32_t id, double t, const FreeFlight::Point& p);
+  void note_ahead(std::uint32_t id, double t, const Box& before, double t0_before);
+  bool resync_clear_of(std::uint32_t id, const Box& reach);
   FreeFlight flight_of(std::uint32_t id, const FreeFlight::Point& p) const;
   FreeFlight::Point coasting_at(std::uint32_t id, double t) const;
   void engage(std::uint32_t id, const FreeFlight::Point& p, bool frozen);
@@ -162,6 +166,14 @@ class Engine {
   std::vector<Ahead> ahead_;               // synced within this step, with the box they had
   std::vector<std::uint32_t> ahead_slot_;  // per grain: its latest entry in ahead_
   std::vector<Ahead> widened_;  // synced ahead of a shortened step: boxes to narrow later
+  struct Room {
+    std::uint32_t id;
+    FreeFlight::Point at;  // where it is at the sync that moves it
+    Box before;            // its box until then
+    double t0;             // its window's start until then
+  };
+  std::vector<Room> room_;            // scratch of make_room
+  std::vector<std::uint32_t> found_;  // scratch of wake_around
   DragEvaluator drag_;
   double registry_cell_ = 1e-3, travel_ = 1e-3;
   std::size_t settled_ = 0;

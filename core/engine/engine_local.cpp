@@ -81,8 +81,10 @@ FreeFlight Engine::flight_of(std::uint32_t id, const FreeFlight::Point& p) const
 
 // The longest window (up to max_coast_s) over which grain id, at p at time t, can coast
 // without its box meeting another or a wall; with `commit`, takes it. False: none as long as
-// its own crossing time (and nothing was changed).
-bool Engine::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit) {
+// its own crossing time (and nothing was changed; `needed`, if given, is then the box of that
+// shortest window).
+bool Engine::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit,
+                   Box* needed) {
   const FreeFlight f = flight_of(id, p);
   const double r = 0.5 * sample_.particles.diameter[id], pad = r * (1 + kSkin);
   const double hw = model_.half_width;
@@ -130,7 +132,79 @@ bool Engine::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool 
       }
     if (clear) return take(w);
   }
+  if (needed) *needed = box(shortest);
   return false;
+}
+
+// Grain id, synced at t, found no window because its shortest box meets the boxes of coasting
+// grains. Those boxes hold the grains' whole windows, long for slow grains, though the grains
+// themselves may be far from id now: each of them is synced early, at t, which its exact
+// trajectory allows, and takes a new window once id holds its own. True: id coasts (the grains
+// that cannot are in failed_). False: something else is in the way (a member, a wall, a grain
+// already close), and nothing was changed.
+bool Engine::make_room(std::uint32_t id, double t, const FreeFlight::Point& p) {
+  Box needed;
+  if (coast(id, t, p, false, &needed)) return false;  // not called for a grain that can coast
+  const double hw = model_.half_width;
+  if (needed.x0 <= -hw || needed.x1 >= hw || needed.y0 <= 0) return false;
+  const Particles& s = sample_.particles;
+  room_.clear();
+  bool movable = true;
+  boxes_.overlapping(needed, id, [&](std::uint32_t j) {
+    if (!movable) return;
+    if (kind_[j] != kCoasting || t0_[j] > t || t1_[j] <= t) {
+      movable = false;
+      return;
+    }
+    const FreeFlight::Point q = coasting_at(j, t);
+    const double pad = 0.5 * s.diameter[j] * (1 + kSkin);
+    movable = !needed.overlaps(Box{q.x - pad, q.x + pad, q.y - pad, q.y + pad});
+    room_.push_back({j, q, Box{}, 0.0});
+  });
+  if (!movable || room_.empty()) return false;
+  std::sort(room_.begin(), room_.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
+  for (Room& m : room_) {
+    m.before = boxes_.box(m.id);
+    m.t0 = t0_[m.id];
+    const double pad = 0.5 * s.diameter[m.id] * (1 + kSkin);
+    boxes_.set(m.id, Box{m.at.x - pad, m.at.x + pad, m.at.y - pad, m.at.y + pad}, kCoasting);
+    t1_[m.id] = HUGE_VAL;  // its heap entry is stale
+  }
+  const Box before = boxes_.box(id);
+  const double t0_before = t0_[id];
+  const bool coasting = coast(id, t, p, true);
+  if (coasting) note_ahead(id, t, before, t0_before);
+  for (const Room& m : room_) {
+    stats_.particle_steps += 1;
+    if (m.at.y + 0.5 * s.diameter[m.id] < retire_height_) {
+      retire(m.id, t, m.at);
+      continue;
+    }
+    move_deposit(m.id, m.at.x, m.at.y);
+    if (coast(m.id, t, m.at, true)) {
+      note_ahead(m.id, t, m.before, m.t0);
+    } else {
+      // Joins the members at their time, on the window it had (still in flight_, from m.t0),
+      // with its old box, which holds its path from then on.
+      boxes_.set(m.id, m.before, kCoasting);
+      failed_.push_back(m.id);
+    }
+  }
+  return coasting;
+}
+
+// A grain synced at t, ahead of the members' time, with the box it had before: kept so that the
+// box can be widened should the members' step shrink below t.
+void Engine::note_ahead(std::uint32_t id, double t, const Box& before, double t0_before) {
+  if (!model_.contact) return;
+  // Synced ahead twice within the step: its path from the members' time on lies in the box it
+  // had before the first of the two syncs and in the window between.
+  Box from = before;
+  const std::uint32_t slot = ahead_slot_[id];
+  if (slot < ahead_.size() && ahead_[slot].id == id && ahead_[slot].time == t0_before)
+    from = ahead_[slot].before.merged(before);
+  ahead_slot_[id] = std::uint32_t(ahead_.size());
+  ahead_.push_back({id, t, from, boxes_.box(id), false});
 }
 
 // A coasting grain at time t. Inside its window, exactly. Before it (a grain synced ahead of the
@@ -238,7 +312,7 @@ void Engine::engage(std::uint32_t id, const FreeFlight::Point& p, bool frozen) {
 // too (coasting grains where they are now, settled ones frozen), until nothing more does.
 void Engine::wake_around(std::uint32_t first) {
   if (first != kNoMember) wake_.push_back(first);
-  std::vector<std::uint32_t> found;
+  std::vector<std::uint32_t>& found = found_;
   while (!wake_.empty()) {
     const std::uint32_t id = wake_.back();
     wake_.pop_back();
@@ -250,9 +324,10 @@ void Engine::wake_around(std::uint32_t first) {
       if (kind_[j] == kCoasting || kind_[j] == kSettled) found.push_back(j);
     });
     std::sort(found.begin(), found.end());
+    const Box reach = boxes_.box(id);
     for (std::uint32_t j : found) {
       if (kind_[j] == kCoasting) {
-        engage(j, coasting_at(j, time_), false);
+        if (!resync_clear_of(j, reach)) engage(j, coasting_at(j, time_), false);
       } else {
         const FreeFlight& f = flight_[j];
         --settled_;
@@ -260,6 +335,30 @@ void Engine::wake_around(std::uint32_t first) {
       }
     }
   }
+}
+
+// A coasting grain whose box (its whole window) meets `reach` though the grain itself is clear
+// of it now: synced now, at the members' time, it may take a new window clear of `reach`.
+// True if it did (or retired); false: it is to join the members, and nothing was changed.
+bool Engine::resync_clear_of(std::uint32_t j, const Box& reach) {
+  if (!model_.contact || t0_[j] > time_ || t1_[j] <= time_) return false;
+  const FreeFlight::Point q = coasting_at(j, time_);
+  const double r = 0.5 * sample_.particles.diameter[j], pad = r * (1 + kSkin);
+  const Box disc{q.x - pad, q.x + pad, q.y - pad, q.y + pad};
+  if (disc.overlaps(reach)) return false;
+  if (q.y + r < retire_height_) {
+    retire(j, time_, q);
+    return true;
+  }
+  const Box old = boxes_.box(j);
+  boxes_.set(j, disc, kCoasting);
+  if (coast(j, time_, q, true)) {
+    stats_.particle_steps += 1;
+    move_deposit(j, q.x, q.y);
+    return true;
+  }
+  boxes_.set(j, old, kCoasting);
+  return false;
 }
 
 void Engine::anchor(std::size_t k) {
@@ -430,17 +529,12 @@ void Engine::step_local(double limit) {
       const Box before = model_.contact ? boxes_.box(id) : Box{};
       const double t0_before = t0_[id];
       if (coast(id, t, p, true)) {
-        if (model_.contact) {
-          // Synced ahead twice within the step: its path from the members' time on lies in
-          // the box it had before the first of the two syncs and in the window between.
-          Box from = before;
-          const std::uint32_t slot = ahead_slot_[id];
-          if (slot < ahead_.size() && ahead_[slot].id == id && ahead_[slot].time == t0_before)
-            from = ahead_[slot].before.merged(before);
-          ahead_slot_[id] = std::uint32_t(ahead_.size());
-          ahead_.push_back({id, t, from, boxes_.box(id), false});
-        }
+        note_ahead(id, t, before, t0_before);
         continue;
+      }
+      if (model_.contact && make_room(id, t, p)) {
+        if (failed_.empty()) continue;
+        break;  // a grain it moved could not coast: the members' step is chosen again with it
       }
       t1_[id] = HUGE_VAL;  // its heap entry, if any, is stale
       failed_.push_back(id);
