@@ -107,6 +107,15 @@ bool Engine::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool 
     if (model_.contact) boxes_.set(id, box(w), kCoasting);
     syncs_.emplace_back(t + w, id);
     std::push_heap(syncs_.begin(), syncs_.end(), kLater);
+    // Windows cut short (a grain synced early, engaged or retired) leave their entries behind
+    // until their time comes: past twice the grains, the stale ones go (the heap pops in the
+    // same order either way: entries compare by time, then id).
+    if (syncs_.size() > 2 * kind_.size() + 1024) {
+      std::erase_if(syncs_, [&](const Sync& e) {
+        return kind_[e.second] != kCoasting || t1_[e.second] != e.first;
+      });
+      std::make_heap(syncs_.begin(), syncs_.end(), kLater);
+    }
     ++stats_.windows;
     return true;
   };
@@ -476,11 +485,13 @@ void Engine::start_local() {
                  Box{start[id].x - pad, start[id].x + pad, start[id].y - pad, start[id].y + pad},
                  kCoasting);
   }
-  state_.resize(0);
-  search_.clear();
-  x0_.clear();
-  y0_.clear();
-  forces_.stiffness.clear();
+  // The state holds the members only, a few thousand at most: the room it had for every
+  // grain (a sixth of the memory at a million particles) goes back.
+  state_ = EngineState{};
+  forces_ = ForceAccumulators{};
+  std::vector<double>().swap(search_);
+  std::vector<double>().swap(x0_);
+  std::vector<double>().swap(y0_);
   for (std::uint32_t id = 0; id < n; ++id)
     if (start[id].y + 0.5 * s.diameter[id] < retire_height_) retire(id, 0.0, start[id]);
   for (std::uint32_t id = 0; id < n; ++id) {
