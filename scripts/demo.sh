@@ -3,7 +3,7 @@
 # (replacing the demo run already there). The tests and benchmarks are built by test.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh
+scripts/setup.sh --build-only
 scripts/build.sh sedem
 build/app/sedem run scenes/demo.toml --out out/demo --overwrite "$@"
 echo "demo: pictures in out/demo/frames/ and out/demo/figures/, ParaView series out/demo/*.pvd"

@@ -8,7 +8,14 @@
 # build's VTK), so its two .debs are downloaded and unpacked with dpkg -x into a private
 # folder (SEDEM_PARAVIEW_DIR, default .paraview/ at the repository's root): the installed
 # packages are never changed by that step. tests/render/pvpython.sh runs that pvpython.
+#
+# scripts/setup.sh --build-only installs only what building and running sedem needs (the demo's
+# set-up: CMake's configure also wants GoogleTest and clang-format), not the Python test tools,
+# nor ParaView and its libraries; a later plain run adds them.
 set -euo pipefail
+
+build_only=false
+[[ "${1:-}" == "--build-only" ]] && build_only=true
 
 packages=(
   build-essential cmake ninja-build pkg-config git
@@ -16,6 +23,8 @@ packages=(
   libvtk9-dev qt6-base-dev
   libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev libglew-dev
   libgtest-dev googletest clang-format
+)
+$build_only || packages+=(
   python3 python3-numpy python3-vtk9 python3-matplotlib python3-pytest
   # ParaView's pvpython (unpacked below): its libraries' dependencies, and an X server for
   # its rendering (Debian's ParaView renders through X only).
@@ -37,9 +46,14 @@ done
 
 have_paraview=false
 [[ -x "$paraview_dir/usr/bin/pvpython" ]] && have_paraview=true
+$build_only && have_paraview=true  # not wanted
 
 if ((${#missing[@]} == 0)) && [[ $have_paraview == true ]]; then
-  echo "setup: all ${#packages[@]} packages present, ParaView in $paraview_dir"
+  if $build_only; then
+    echo "setup: all ${#packages[@]} packages to build and run sedem present"
+  else
+    echo "setup: all ${#packages[@]} packages present, ParaView in $paraview_dir"
+  fi
   exit 0
 fi
 

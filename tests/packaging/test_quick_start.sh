@@ -15,7 +15,8 @@ done
 printf '#!/bin/sh\necho "sedem $*" >> "%s/calls"\n' "$work" > "$work/repo/build/app/sedem"
 chmod +x "$work/repo/build/app/sedem"
 # setup.sh: every package present (no apt call), as on a set-up machine.
-printf '#!/bin/sh\necho "install ok installed"\n' > "$work/bin/dpkg-query"
+printf '#!/bin/sh\necho "dpkg-query $*" >> "%s/calls"\necho "install ok installed"\n' "$work" \
+  > "$work/bin/dpkg-query"
 chmod +x "$work/bin/dpkg-query"
 
 fail() { echo "FAIL: $*"; echo "--- calls:"; cat "$work/calls"; exit 1; }
@@ -25,10 +26,14 @@ grep -q -- "^cmake --build build .*--target sedem" "$work/calls" || fail "demo.s
 [ "$(grep -c -- "^cmake --build" "$work/calls")" = 1 ] || fail "demo.sh: more than one build"
 grep -q -- "^sedem run scenes/demo.toml --out out/demo --overwrite" "$work/calls" ||
   fail "demo.sh: the demo cannot run twice (no --overwrite)"
+grep -q -- "^dpkg-query .* libvtk9-dev$" "$work/calls" || fail "demo.sh: no set-up"
+! grep -q -- "^dpkg-query .* \(python3-pytest\|xvfb\|libgdal32\)$" "$work/calls" ||
+  fail "demo.sh: sets up the test tools or ParaView's libraries too"
 
 : > "$work/calls"
 PATH="$work/bin:$PATH" "$work/repo/scripts/test.sh" > /dev/null
 build=$(grep -- "^cmake --build" "$work/calls") || fail "test.sh: no build"
 case $build in *--target*) fail "test.sh: builds only some targets: $build" ;; esac
 grep -q "^ctest " "$work/calls" || fail "test.sh: no ctest"
-echo "quick start: demo.sh builds sedem only and overwrites its demo; test.sh builds all"
+grep -q -- "^dpkg-query .* python3-pytest$" "$work/calls" || fail "test.sh: not the whole set-up"
+echo "quick start: demo.sh sets up and builds sedem only and overwrites its demo; test.sh all"
