@@ -11,6 +11,7 @@
 #include "render/offscreen_view.h"
 #include "render/pixel_canvas.h"
 #include "render/plot.h"
+#include "render/text_fit.h"
 
 namespace sedem::render {
 namespace {
@@ -67,8 +68,11 @@ void draw_panel(PixelCanvas& canvas, const MassBandsFigure& f, const ColumnSampl
                 const ColumnState& state, double full_scale, double px0, double py0) {
   const auto g = panel_geometry(f, px0, py0);
   const double col_w = f.width * g.scale;
-  canvas.text(sample.label + ", t = " + time_label(state.time_s), px0 + 0.5 * f.panel_width,
-              py0 + f.panel_height - 15, 13, true, true);
+  // Within its panel: a run named by several scene keys would run into the next one.
+  const auto title =
+      fit_text(sample.label + ", t = " + time_label(state.time_s), f.panel_width - 8, 13, 8, true);
+  canvas.text(title.text, px0 + 0.5 * f.panel_width, py0 + f.panel_height - 15, title.size, true,
+              true);
 
   const auto& bands = state.band_mass_fraction;
   const double band_h = bands.empty() ? 0 : (g.col_y1 - g.col_y0) / double(bands.size());

@@ -26,6 +26,7 @@
 #include <vtkTextRenderer.h>
 
 #include "render/offscreen_view.h"
+#include "render/text_fit.h"
 
 namespace sedem::render {
 namespace {
@@ -33,6 +34,12 @@ namespace {
 constexpr int kTitleHeight = 34;
 constexpr int kLeftMargin = 72, kBottomMargin = 46, kTopMargin = 28;
 constexpr int kLegendFont = 11;
+constexpr int kTitleFont = 14;
+// The legend strip takes at most this share of a panel's width: longer entries (the names
+// `sedem render` gives runs) wrap onto more lines rather than squeezing the plot area.
+constexpr double kLegendShare = 0.45;
+// Beside a legend entry's text: the strip's left gap, the legend's padding and line sample.
+constexpr int kLegendPad = 64;
 
 std::string identifier(const std::string& text) {
   std::string out;
@@ -239,11 +246,39 @@ vtkSmartPointer<vtkTable> band_table(const PlotSeries& s, double x0, double y0) 
   return table;
 }
 
+// The widest a legend entry's text may be in `figure`'s panels before it wraps.
+int legend_text_width(const Figure& figure) {
+  return int(kLegendShare * figure.panel_width) - kLegendPad;
+}
+
+// A series' legend entry as drawn: its name, wrapped to the legend strip.
+std::vector<std::string> legend_lines(const PlotSeries& s, int text_width) {
+  return wrap_text(s.name, text_width, kLegendFont);
+}
+
+// A line of a legend entry after its first: a plot with no data that draws no line sample,
+// right after its series' plot, so that it sits under the entry's first line.
+void add_legend_continuation(vtkChartXY* chart, const std::string& line) {
+  auto table = vtkSmartPointer<vtkTable>::New();
+  for (const char* name : {"x", "y"}) {
+    auto a = vtkSmartPointer<vtkDoubleArray>::New();
+    a->SetName(name);
+    table->AddColumn(a);
+  }
+  vtkPlot* p = chart->AddPlot(vtkChart::LINE);
+  p->SetInputData(table, 0, 1);
+  p->SetLabel("   " + line);
+  p->SetColor(255, 255, 255, 0);
+  p->GetPen()->SetLineType(vtkPen::NO_PEN);
+  if (auto* marker = vtkPlotPoints::SafeDownCast(p)) marker->SetMarkerStyle(vtkPlotPoints::NONE);
+}
+
 vtkSmartPointer<vtkChartXY> make_chart(const Plot& plot,
-                                       const std::map<std::string, std::size_t>& colors) {
+                                       const std::map<std::string, std::size_t>& colors,
+                                       int legend_text) {
   auto chart = vtkSmartPointer<vtkChartXY>::New();
   chart->SetTitle(plot.title);
-  chart->GetTitleProperties()->SetFontSize(14);
+  chart->GetTitleProperties()->SetFontSize(kTitleFont);
   chart->GetTitleProperties()->SetBold(true);
   chart->GetTitleProperties()->SetColor(0, 0, 0);
   chart->GetTitleProperties()->SetFontFamilyToArial();
@@ -266,7 +301,8 @@ vtkSmartPointer<vtkChartXY> make_chart(const Plot& plot,
     const bool points = s.style == SeriesStyle::points || s.x.size() < 2;
     vtkPlot* p = chart->AddPlot(points ? vtkChart::POINTS : vtkChart::LINE);
     p->SetInputData(series_table(s, plot.x.log, plot.y.log, xt.offset, yt.offset), 0, 1);
-    p->SetLabel(s.name);
+    const auto lines = legend_lines(s, legend_text);
+    p->SetLabel(lines.front());
     const auto rgb = s.color ? *s.color : palette_color(colors.at(s.name));
     p->SetColor(rgb[0], rgb[1], rgb[2], 255);
     p->SetWidth(2.0);
@@ -280,6 +316,8 @@ vtkSmartPointer<vtkChartXY> make_chart(const Plot& plot,
         marker->SetMarkerStyle(vtkPlotPoints::NONE);
       }
     }
+    if (plot.legend)
+      for (std::size_t k = 1; k < lines.size(); ++k) add_legend_continuation(chart, lines[k]);
   }
   chart->SetShowLegend(plot.legend && !plot.series.empty());
   auto* legend = chart->GetLegend();
@@ -375,37 +413,34 @@ namespace {
 std::vector<vtkSmartPointer<vtkChartXY>> draw_figure(const Figure& figure, OffscreenView& view);
 
 // The strip right of the plot areas that holds the widest legend of the figure (none without
-// legends): its longest entry, the line sample before it and padding.
+// legends): its longest line, the line sample before it and padding.
 int legend_width(const Figure& figure) {
-  auto prop = vtkSmartPointer<vtkTextProperty>::New();
-  prop->SetFontFamilyToArial();
-  prop->SetFontSize(kLegendFont);
-  auto* renderer = vtkTextRenderer::GetInstance();
+  const int text = legend_text_width(figure);
   int widest = -1;
   for (const auto& panel : figure.panels) {
     if (!panel.legend) continue;
     for (const auto& s : panel.series) {
       if (s.style == SeriesStyle::band) continue;
-      int bbox[4] = {0, 0, 0, 0};
-      if (renderer) renderer->GetBoundingBox(prop, s.name, bbox, 72);
-      widest = std::max(widest, bbox[1] - bbox[0]);
+      for (const auto& line : legend_lines(s, text))
+        widest = std::max(widest, text_width(line, kLegendFont));
     }
   }
-  return widest < 0 ? 16 : widest + 64;
+  return widest < 0 ? 16 : widest + kLegendPad;
 }
 
-// A legend's height as vtkChartLegend lays it out: per entry a line of text and its padding
+// A legend's height as vtkChartLegend lays it out: per line a line of text and its padding
 // (5 pixels), and the padding once more.
-int legend_height(const Plot& plot) {
+int legend_height(const Plot& plot, int legend_text) {
   auto prop = vtkSmartPointer<vtkTextProperty>::New();
   prop->SetFontFamilyToArial();
   prop->SetFontSize(kLegendFont);
   int bbox[4] = {0, 0, 0, 12};
   if (auto* renderer = vtkTextRenderer::GetInstance())
     renderer->GetBoundingBox(prop, "Tg", bbox, 72);
-  const auto entries = std::count_if(plot.series.begin(), plot.series.end(),
-                                     [](const auto& s) { return s.style != SeriesStyle::band; });
-  return int(entries) * (bbox[3] - bbox[2] + 5) + 5;
+  std::size_t lines = 0;
+  for (const auto& s : plot.series)
+    if (s.style != SeriesStyle::band) lines += legend_lines(s, legend_text).size();
+  return int(lines) * (bbox[3] - bbox[2] + 5) + 5;
 }
 
 std::pair<int, int> figure_size(const Figure& figure) {
@@ -442,6 +477,13 @@ std::vector<PanelLayout> figure_layout(const Figure& figure) {
     l.legend_shown = chart->GetShowLegend();
     l.legend_inline = chart->GetLegend()->GetInline();
     l.legend_point = {point.GetX(), point.GetY()};
+    l.title = chart->GetTitle();
+    l.title_font_size = chart->GetTitleProperties()->GetFontSize();
+    for (vtkIdType k = 0; k < chart->GetNumberOfPlots(); ++k) {
+      auto* labels = chart->GetPlot(k)->GetLabels();
+      if (chart->GetPlot(k)->GetLegendVisibility() && labels && labels->GetNumberOfValues() > 0)
+        l.legend_lines.push_back(labels->GetValue(0));
+    }
     out.push_back(l);
   }
   return out;
@@ -473,10 +515,10 @@ std::vector<vtkSmartPointer<vtkChartXY>> draw_figure(const Figure& figure, Offsc
   const auto [width, height] = figure_size(figure);
   auto actor = vtkSmartPointer<vtkContextActor>::New();
   const auto colors = name_indices(figure);
-  const int legend_w = legend_width(figure);
+  const int legend_w = legend_width(figure), legend_text = legend_text_width(figure);
   for (std::size_t i = 0; i < figure.panels.size(); ++i) {
     const int r = int(i) / columns, c = int(i) % columns;
-    auto chart = make_chart(figure.panels[i], colors);
+    auto chart = make_chart(figure.panels[i], colors, legend_text);
     // Every panel's plot area at the same place in its panel, so that stacked panels share
     // their axes' ends: room on the left for tick labels and the axis title, below for the
     // same, above for the panel's title, and on the right for the widest legend.
@@ -487,9 +529,19 @@ std::vector<vtkSmartPointer<vtkChartXY>> draw_figure(const Figure& figure, Offsc
                             float(figure.panel_width - kLeftMargin - legend_w),
                             float(figure.panel_height - kBottomMargin - kTopMargin)));
     // The legend's point is its lower-left corner: its top level with the plot area's.
-    chart->GetLegend()->SetPoint(vtkVector2f(
-        x0 + float(figure.panel_width - legend_w + 8),
-        y0 + float(figure.panel_height - kTopMargin - legend_height(figure.panels[i]))));
+    chart->GetLegend()->SetPoint(
+        vtkVector2f(x0 + float(figure.panel_width - legend_w + 8),
+                    y0 + float(figure.panel_height - kTopMargin -
+                               legend_height(figure.panels[i], legend_text))));
+    // vtkChartXY centres the title over the plot area; it may reach as far on either side
+    // as the panel allows (the axis' labels on the left, the legend's strip on the right),
+    // and no further, or it runs into the next panel.
+    const int plot_w = figure.panel_width - kLeftMargin - legend_w;
+    const auto title =
+        fit_text(figure.panels[i].title, plot_w + 2 * std::min(kLeftMargin, legend_w) - 8,
+                 kTitleFont, 8, true);
+    chart->SetTitle(title.text);
+    chart->GetTitleProperties()->SetFontSize(title.size);
     actor->GetScene()->AddItem(chart);
     charts.push_back(chart);
   }
