@@ -27,7 +27,7 @@ static void describe(OutputConfig& o, Schema& s) {
   s.flag("output.fields", &o.fields,
          "Write fields.pvd: layer suspension density and concentration at every snapshot.");
   s.flag("output.vector_figures", &o.vector_figures,
-         "Write Figs. 12-18 as SVG too (vector graphics for papers), beside the PNGs.");
+         "Write Figs. 11-18 as SVG too (vector graphics for papers), beside the PNGs.");
   s.integer("output.frame_width", &o.frame_width, 16, 8192, "Frame width, pixels.");
   s.integer("output.frame_height", &o.frame_height, 16, 8192, "Frame height, pixels.");
 }
