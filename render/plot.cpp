@@ -21,10 +21,10 @@
 #include <vtkSVGExporter.h>
 #include <vtkStringArray.h>
 #include <vtkTable.h>
-#include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkTextRenderer.h>
 
+#include "render/context_text.h"
 #include "render/offscreen_view.h"
 #include "render/text_fit.h"
 
@@ -408,9 +408,10 @@ Figure single_plot(Plot plot, int width, int height) {
 
 namespace {
 
-// Draws `figure` into `view` (created by the caller at figure_size(figure)).
-// Draws `figure` into `view`; returns its charts, one per panel.
-std::vector<vtkSmartPointer<vtkChartXY>> draw_figure(const Figure& figure, OffscreenView& view);
+// Draws `figure` into `view` (created by the caller at figure_size(figure)); returns its
+// charts, one per panel, and their titles as drawn.
+std::vector<vtkSmartPointer<vtkChartXY>> draw_figure(const Figure& figure, OffscreenView& view,
+                                                     std::vector<FittedText>& titles);
 
 // The strip right of the plot areas that holds the widest legend of the figure (none without
 // legends): its longest line, the line sample before it and padding.
@@ -456,7 +457,8 @@ vtkSmartPointer<vtkImageData> render_figure(const Figure& figure) {
   if (figure.panels.empty()) throw std::invalid_argument("a figure needs at least one panel");
   const auto [width, height] = figure_size(figure);
   OffscreenView view(width, height);
-  draw_figure(figure, view);
+  std::vector<FittedText> titles;
+  draw_figure(figure, view, titles);
   return view.capture();
 }
 
@@ -464,10 +466,12 @@ std::vector<PanelLayout> figure_layout(const Figure& figure) {
   if (figure.panels.empty()) throw std::invalid_argument("a figure needs at least one panel");
   const auto [width, height] = figure_size(figure);
   OffscreenView view(width, height);
-  const auto charts = draw_figure(figure, view);
+  std::vector<FittedText> titles;
+  const auto charts = draw_figure(figure, view, titles);
   view.capture();
   std::vector<PanelLayout> out;
-  for (const auto& chart : charts) {
+  for (std::size_t i = 0; i < charts.size(); ++i) {
+    const auto& chart = charts[i];
     PanelLayout l;
     const float* x0 = chart->GetAxis(vtkAxis::BOTTOM)->GetPoint1();
     const float* x1 = chart->GetAxis(vtkAxis::BOTTOM)->GetPoint2();
@@ -477,8 +481,8 @@ std::vector<PanelLayout> figure_layout(const Figure& figure) {
     l.legend_shown = chart->GetShowLegend();
     l.legend_inline = chart->GetLegend()->GetInline();
     l.legend_point = {point.GetX(), point.GetY()};
-    l.title = chart->GetTitle();
-    l.title_font_size = chart->GetTitleProperties()->GetFontSize();
+    l.title = titles[i].text;
+    l.title_font_size = titles[i].size;
     for (vtkIdType k = 0; k < chart->GetNumberOfPlots(); ++k) {
       auto* labels = chart->GetPlot(k)->GetLabels();
       if (chart->GetPlot(k)->GetLegendVisibility() && labels && labels->GetNumberOfValues() > 0)
@@ -493,7 +497,8 @@ void write_figure_svg(const Figure& figure, const std::filesystem::path& file) {
   if (figure.panels.empty()) throw std::invalid_argument("a figure needs at least one panel");
   const auto [width, height] = figure_size(figure);
   OffscreenView view(width, height);
-  draw_figure(figure, view);
+  std::vector<FittedText> titles;
+  draw_figure(figure, view, titles);
   view.capture();  // lays the charts out
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
   auto exporter = vtkSmartPointer<vtkSVGExporter>::New();
@@ -507,8 +512,10 @@ void write_figure_svg(const Figure& figure, const std::filesystem::path& file) {
 
 namespace {
 
-std::vector<vtkSmartPointer<vtkChartXY>> draw_figure(const Figure& figure, OffscreenView& view) {
+std::vector<vtkSmartPointer<vtkChartXY>> draw_figure(const Figure& figure, OffscreenView& view,
+                                                     std::vector<FittedText>& titles) {
   std::vector<vtkSmartPointer<vtkChartXY>> charts;
+  titles.clear();
   const int columns = std::clamp(figure.columns, 1, int(figure.panels.size()));
   const int rows = (int(figure.panels.size()) + columns - 1) / columns;
   const int title_h = figure.title.empty() ? 0 : kTitleHeight;
@@ -533,32 +540,35 @@ std::vector<vtkSmartPointer<vtkChartXY>> draw_figure(const Figure& figure, Offsc
         vtkVector2f(x0 + float(figure.panel_width - legend_w + 8),
                     y0 + float(figure.panel_height - kTopMargin -
                                legend_height(figure.panels[i], legend_text))));
-    // vtkChartXY centres the title over the plot area; it may reach as far on either side
-    // as the panel allows (the axis' labels on the left, the legend's strip on the right),
-    // and no further, or it runs into the next panel.
+    // vtkChartXY centres the title over the plot area. One too wide for that (a run named
+    // by several scene keys) goes higher, above the top tick label and the legend, across
+    // the whole panel and no further, or it would run into the next panel.
     const int plot_w = figure.panel_width - kLeftMargin - legend_w;
-    const auto title =
-        fit_text(figure.panels[i].title, plot_w + 2 * std::min(kLeftMargin, legend_w) - 8,
-                 kTitleFont, 8, true);
-    chart->SetTitle(title.text);
-    chart->GetTitleProperties()->SetFontSize(title.size);
+    const auto& title = figure.panels[i].title;
+    auto fitted = fit_text(title, plot_w + 8, kTitleFont, 10, true);
+    if (fitted.text == title) {
+      chart->SetTitle(fitted.text);
+      chart->GetTitleProperties()->SetFontSize(fitted.size);
+    } else {
+      fitted = fit_text(title, figure.panel_width - 8, kTitleFont, 8, true);
+      chart->SetTitle("");
+      auto text = vtkSmartPointer<ContextText>::New();
+      text->Set(fitted.text, x0 + 0.5f * float(figure.panel_width),
+                y0 + float(figure.panel_height - 10), fitted.size, true);
+      actor->GetScene()->AddItem(text);
+    }
+    titles.push_back(fitted);
     actor->GetScene()->AddItem(chart);
     charts.push_back(chart);
   }
-  view.renderer()->AddActor(actor);
   if (title_h > 0) {
-    auto text = vtkSmartPointer<vtkTextActor>::New();
-    text->SetInput(figure.title.c_str());
-    auto* prop = text->GetTextProperty();
-    prop->SetFontFamilyToArial();
-    prop->SetBold(true);
-    prop->SetColor(0, 0, 0);
-    prop->SetJustificationToCentered();
-    prop->SetVerticalJustificationToCentered();
-    prop->SetFontSize(fitting_font_size(figure.title, prop, width - 16, 18));
-    text->SetDisplayPosition(width / 2, height - title_h / 2);
-    view.renderer()->AddActor2D(text);
+    // In the charts' scene, so that the SVG has it as text too.
+    const auto fitted = fit_text(figure.title, width - 16, 18, 8, true);
+    auto text = vtkSmartPointer<ContextText>::New();
+    text->Set(fitted.text, 0.5f * float(width), float(height - title_h / 2), fitted.size, true);
+    actor->GetScene()->AddItem(text);
   }
+  view.renderer()->AddActor(actor);
   return charts;
 }
 

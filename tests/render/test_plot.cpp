@@ -118,6 +118,10 @@ TEST(Plot, SvgHoldsTheFigureAsVectorGraphics) {
   EXPECT_NE(text.find("Settling"), std::string::npos);       // the panel's title as text
   EXPECT_NE(text.find("percent finer"), std::string::npos);  // an axis title
   EXPECT_NE(text.find("<path"), std::string::npos);          // the curves as paths
+  // The figure's title as text in the picture, not only as the document's <title>.
+  const auto title = text.find("Settling in kg/m³");
+  ASSERT_NE(title, std::string::npos);
+  EXPECT_NE(text.find("Settling in kg/m³", title + 1), std::string::npos);
   auto png = base;
   png += ".png";
   EXPECT_TRUE(std::filesystem::exists(png));
@@ -196,7 +200,16 @@ TEST(Plot, PanelTitlesStayWithinTheirPanel) {
   // The two titles do not meet at the panels' boundary.
   EXPECT_EQ(test::dark_pixels(image, f.panel_width - 3, f.panel_width + 3, bottom, top), 0);
   EXPECT_GT(test::dark_pixels(image, 0, dims[0], bottom, top), 200);  // but they are drawn
-  for (const auto& l : render::figure_layout(f)) EXPECT_GE(l.title_font_size, 8);
+  for (const auto& l : render::figure_layout(f)) {
+    EXPECT_GE(l.title_font_size, 8);
+    EXPECT_EQ(l.title, kLongRun);  // whole: a panel's width holds three keys
+  }
+  // Titles too wide for the plot area are drawn in the charts' scene: the SVG has them.
+  const auto base = test::output_dir() / "plot_long_titles";
+  render::write_figure(f, base, true);
+  auto svg = base;
+  svg += ".svg";
+  EXPECT_NE(test::read_text(svg).find(kLongRun), std::string::npos);
 }
 
 std::vector<std::string> labels_of(double lo, double hi, bool log) {
