@@ -224,7 +224,7 @@ void write_figures(const std::vector<LabelledResults>& runs, const std::filesyst
   const bool svg =
       std::any_of(runs.begin(), runs.end(), [](const auto& r) { return r.vector_figures; });
   if (auto in = fig11_input(runs); !in.samples.empty())
-    render::write_mass_bands(in, dir / "fig11_column");
+    render::write_mass_bands(in, dir / "fig11_column", svg);
   if (auto in = fig12_input(runs); !in.samples.empty()) render::write_fig12(in, dir, svg);
   if (auto in = fig13_input(runs); !in.empty()) render::write_fig13(in, dir, svg);
   if (auto in = fig14_input(runs); !in.empty()) render::write_fig14(in, dir, svg);

@@ -21,7 +21,7 @@ struct LabelledResults {
   double particle_density = 2500;
   double simulated_count = 0;      // simulated particles: Fig. 13's band width
   double homogeneous_density = 0;  // kg/m^3, the suspension at t = 0 (Fig. 13)
-  bool vector_figures = false;     // output.vector_figures: Figs. 12-18 also as SVG
+  bool vector_figures = false;     // output.vector_figures: Figs. 11-18 also as SVG
 };
 
 // Labels for runs drawn side by side, from their resolved scenes (run.json's "scene"): each

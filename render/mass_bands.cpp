@@ -11,6 +11,7 @@
 #include "render/offscreen_view.h"
 #include "render/pixel_canvas.h"
 #include "render/plot.h"
+#include "render/text_fit.h"
 
 namespace sedem::render {
 namespace {
@@ -67,8 +68,11 @@ void draw_panel(PixelCanvas& canvas, const MassBandsFigure& f, const ColumnSampl
                 const ColumnState& state, double full_scale, double px0, double py0) {
   const auto g = panel_geometry(f, px0, py0);
   const double col_w = f.width * g.scale;
-  canvas.text(sample.label + ", t = " + time_label(state.time_s), px0 + 0.5 * f.panel_width,
-              py0 + f.panel_height - 15, 13, true, true);
+  // Within its panel: a run named by several scene keys would run into the next one.
+  const auto title =
+      fit_text(sample.label + ", t = " + time_label(state.time_s), f.panel_width - 8, 13, 8, true);
+  canvas.text(title.text, px0 + 0.5 * f.panel_width, py0 + f.panel_height - 15, title.size, true,
+              true);
 
   const auto& bands = state.band_mass_fraction;
   const double band_h = bands.empty() ? 0 : (g.col_y1 - g.col_y0) / double(bands.size());
@@ -216,15 +220,18 @@ double default_full_scale(const MassBandsFigure& f) {
   return bands > 0 ? std::min(1.0, 2.0 / double(bands)) : 1.0;
 }
 
-vtkSmartPointer<vtkImageData> render_mass_bands(const MassBandsFigure& f) {
+namespace {
+
+// The whole figure on a canvas of `width` x `height` pixels, for a picture or an SVG.
+PixelCanvas draw_mass_bands(const MassBandsFigure& f, int& width, int& height) {
   const std::size_t rows = row_count(f);
   if (f.samples.empty() || rows == 0)
     throw std::invalid_argument("a mass-band figure needs a sample with a state");
   const double full_scale =
       f.full_scale_fraction > 0 ? f.full_scale_fraction : default_full_scale(f);
   const int title_h = f.title.empty() ? 0 : kTitleHeight;
-  const int width = int(f.samples.size()) * f.panel_width + kScaleWidth;
-  const int height = int(rows) * f.panel_height + title_h;
+  width = int(f.samples.size()) * f.panel_width + kScaleWidth;
+  height = int(rows) * f.panel_height + title_h;
 
   PixelCanvas canvas;
   for (std::size_t c = 0; c < f.samples.size(); ++c)
@@ -240,7 +247,14 @@ vtkSmartPointer<vtkImageData> render_mass_bands(const MassBandsFigure& f) {
     const int size = fitting_font_size(f.title, prop, width - 16, 18);
     canvas.text(f.title, 0.5 * width, height - 0.5 * title_h, size, true, true);
   }
+  return canvas;
+}
 
+}  // namespace
+
+vtkSmartPointer<vtkImageData> render_mass_bands(const MassBandsFigure& f) {
+  int width = 0, height = 0;
+  auto canvas = draw_mass_bands(f, width, height);
   OffscreenView view(width, height);
   canvas.draw(view.renderer(), width, height);
   return view.capture();
@@ -280,12 +294,17 @@ void write_mass_bands_csv(const MassBandsFigure& f, const std::filesystem::path&
   if (!out) throw std::runtime_error("cannot write " + file.string());
 }
 
-void write_mass_bands(const MassBandsFigure& figure, const std::filesystem::path& base) {
-  auto png = base, csv = base;
+void write_mass_bands(const MassBandsFigure& figure, const std::filesystem::path& base, bool svg) {
+  auto png = base, csv = base, vector = base;
   png += ".png";
   csv += ".csv";
+  vector += ".svg";
   write_png(render_mass_bands(figure), png);
   write_mass_bands_csv(figure, csv);
+  if (svg) {
+    int width = 0, height = 0;
+    draw_mass_bands(figure, width, height).write_svg(vector, width, height);
+  }
 }
 
 std::vector<double> band_fractions_from_layers(const std::vector<double>& layer_mass,

@@ -80,8 +80,9 @@ vtkSmartPointer<vtkImageData> render_mass_bands(const MassBandsFigure& figure);
 // "<sample> t=<time> s:mass_percent".
 void write_mass_bands_csv(const MassBandsFigure& figure, const std::filesystem::path& file);
 
-// Writes `<base>.png` and `<base>.csv`.
-void write_mass_bands(const MassBandsFigure& figure, const std::filesystem::path& base);
+// Writes `<base>.png` and `<base>.csv`, and with `svg` `<base>.svg`.
+void write_mass_bands(const MassBandsFigure& figure, const std::filesystem::path& base,
+                      bool svg = false);
 
 // Groups per-layer masses (from the free surface down) into bands of `layers_per_band`
 // layers (the last band takes the remainder) and divides by the total mass.

@@ -231,7 +231,9 @@ Figure fig13_bulb_density(const std::vector<SampleBulbDensity>& samples) {
     std::snprintf(unit, sizeof unit, "cm; bands of %.2g cm", 100.0 * length / bands);
     Plot plot;
     plot.title = s.sample;
-    plot.x = axis("distance below the bulb's top", unit, 0.0, 100.0 * length);
+    // To the bulb's tip at the nearest millimetre: the last layer's centre falls a hair short
+    // of it (13.998 cm), which dropped the axis' end label (14).
+    plot.x = axis("distance below the bulb's top", unit, 0.0, std::round(1000.0 * length) / 10.0);
     plot.x.column = "position_along_the_bulb_cm";
     plot.y = axis("suspension density", "kg/m³");
     if (s.homogeneous_kg_m3 > 0) {

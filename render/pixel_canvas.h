@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <filesystem>
 #include <string>
 
 #include <vtkCellArray.h>
@@ -28,6 +29,9 @@ class PixelCanvas {
   // Adds the actors to `renderer` and sets a camera that maps one unit to one pixel of a
   // `width` x `height` viewport.
   void draw(vtkRenderer* renderer, int width, int height);
+
+  // The same drawing as an SVG file of `width` x `height` pixels: vector graphics for papers.
+  void write_svg(const std::filesystem::path& file, int width, int height) const;
 
  private:
   struct Layer {

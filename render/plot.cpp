@@ -21,11 +21,12 @@
 #include <vtkSVGExporter.h>
 #include <vtkStringArray.h>
 #include <vtkTable.h>
-#include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkTextRenderer.h>
 
+#include "render/context_text.h"
 #include "render/offscreen_view.h"
+#include "render/text_fit.h"
 
 namespace sedem::render {
 namespace {
@@ -33,6 +34,12 @@ namespace {
 constexpr int kTitleHeight = 34;
 constexpr int kLeftMargin = 72, kBottomMargin = 46, kTopMargin = 28;
 constexpr int kLegendFont = 11;
+constexpr int kTitleFont = 14;
+// The legend strip takes at most this share of a panel's width: longer entries (the names
+// `sedem render` gives runs) wrap onto more lines rather than squeezing the plot area.
+constexpr double kLegendShare = 0.45;
+// Beside a legend entry's text: the strip's left gap, the legend's padding and line sample.
+constexpr int kLegendPad = 64;
 
 std::string identifier(const std::string& text) {
   std::string out;
@@ -239,11 +246,39 @@ vtkSmartPointer<vtkTable> band_table(const PlotSeries& s, double x0, double y0) 
   return table;
 }
 
+// The widest a legend entry's text may be in `figure`'s panels before it wraps.
+int legend_text_width(const Figure& figure) {
+  return int(kLegendShare * figure.panel_width) - kLegendPad;
+}
+
+// A series' legend entry as drawn: its name, wrapped to the legend strip.
+std::vector<std::string> legend_lines(const PlotSeries& s, int text_width) {
+  return wrap_text(s.name, text_width, kLegendFont);
+}
+
+// A line of a legend entry after its first: a plot with no data that draws no line sample,
+// right after its series' plot, so that it sits under the entry's first line.
+void add_legend_continuation(vtkChartXY* chart, const std::string& line) {
+  auto table = vtkSmartPointer<vtkTable>::New();
+  for (const char* name : {"x", "y"}) {
+    auto a = vtkSmartPointer<vtkDoubleArray>::New();
+    a->SetName(name);
+    table->AddColumn(a);
+  }
+  vtkPlot* p = chart->AddPlot(vtkChart::LINE);
+  p->SetInputData(table, 0, 1);
+  p->SetLabel("   " + line);
+  p->SetColor(255, 255, 255, 0);
+  p->GetPen()->SetLineType(vtkPen::NO_PEN);
+  if (auto* marker = vtkPlotPoints::SafeDownCast(p)) marker->SetMarkerStyle(vtkPlotPoints::NONE);
+}
+
 vtkSmartPointer<vtkChartXY> make_chart(const Plot& plot,
-                                       const std::map<std::string, std::size_t>& colors) {
+                                       const std::map<std::string, std::size_t>& colors,
+                                       int legend_text) {
   auto chart = vtkSmartPointer<vtkChartXY>::New();
   chart->SetTitle(plot.title);
-  chart->GetTitleProperties()->SetFontSize(14);
+  chart->GetTitleProperties()->SetFontSize(kTitleFont);
   chart->GetTitleProperties()->SetBold(true);
   chart->GetTitleProperties()->SetColor(0, 0, 0);
   chart->GetTitleProperties()->SetFontFamilyToArial();
@@ -266,7 +301,8 @@ vtkSmartPointer<vtkChartXY> make_chart(const Plot& plot,
     const bool points = s.style == SeriesStyle::points || s.x.size() < 2;
     vtkPlot* p = chart->AddPlot(points ? vtkChart::POINTS : vtkChart::LINE);
     p->SetInputData(series_table(s, plot.x.log, plot.y.log, xt.offset, yt.offset), 0, 1);
-    p->SetLabel(s.name);
+    const auto lines = legend_lines(s, legend_text);
+    p->SetLabel(lines.front());
     const auto rgb = s.color ? *s.color : palette_color(colors.at(s.name));
     p->SetColor(rgb[0], rgb[1], rgb[2], 255);
     p->SetWidth(2.0);
@@ -280,6 +316,8 @@ vtkSmartPointer<vtkChartXY> make_chart(const Plot& plot,
         marker->SetMarkerStyle(vtkPlotPoints::NONE);
       }
     }
+    if (plot.legend)
+      for (std::size_t k = 1; k < lines.size(); ++k) add_legend_continuation(chart, lines[k]);
   }
   chart->SetShowLegend(plot.legend && !plot.series.empty());
   auto* legend = chart->GetLegend();
@@ -370,42 +408,40 @@ Figure single_plot(Plot plot, int width, int height) {
 
 namespace {
 
-// Draws `figure` into `view` (created by the caller at figure_size(figure)).
-// Draws `figure` into `view`; returns its charts, one per panel.
-std::vector<vtkSmartPointer<vtkChartXY>> draw_figure(const Figure& figure, OffscreenView& view);
+// Draws `figure` into `view` (created by the caller at figure_size(figure)); returns its
+// charts, one per panel, and their titles as drawn.
+std::vector<vtkSmartPointer<vtkChartXY>> draw_figure(const Figure& figure, OffscreenView& view,
+                                                     std::vector<FittedText>& titles);
 
 // The strip right of the plot areas that holds the widest legend of the figure (none without
-// legends): its longest entry, the line sample before it and padding.
+// legends): its longest line, the line sample before it and padding.
 int legend_width(const Figure& figure) {
-  auto prop = vtkSmartPointer<vtkTextProperty>::New();
-  prop->SetFontFamilyToArial();
-  prop->SetFontSize(kLegendFont);
-  auto* renderer = vtkTextRenderer::GetInstance();
+  const int text = legend_text_width(figure);
   int widest = -1;
   for (const auto& panel : figure.panels) {
     if (!panel.legend) continue;
     for (const auto& s : panel.series) {
       if (s.style == SeriesStyle::band) continue;
-      int bbox[4] = {0, 0, 0, 0};
-      if (renderer) renderer->GetBoundingBox(prop, s.name, bbox, 72);
-      widest = std::max(widest, bbox[1] - bbox[0]);
+      for (const auto& line : legend_lines(s, text))
+        widest = std::max(widest, text_width(line, kLegendFont));
     }
   }
-  return widest < 0 ? 16 : widest + 64;
+  return widest < 0 ? 16 : widest + kLegendPad;
 }
 
-// A legend's height as vtkChartLegend lays it out: per entry a line of text and its padding
+// A legend's height as vtkChartLegend lays it out: per line a line of text and its padding
 // (5 pixels), and the padding once more.
-int legend_height(const Plot& plot) {
+int legend_height(const Plot& plot, int legend_text) {
   auto prop = vtkSmartPointer<vtkTextProperty>::New();
   prop->SetFontFamilyToArial();
   prop->SetFontSize(kLegendFont);
   int bbox[4] = {0, 0, 0, 12};
   if (auto* renderer = vtkTextRenderer::GetInstance())
     renderer->GetBoundingBox(prop, "Tg", bbox, 72);
-  const auto entries = std::count_if(plot.series.begin(), plot.series.end(),
-                                     [](const auto& s) { return s.style != SeriesStyle::band; });
-  return int(entries) * (bbox[3] - bbox[2] + 5) + 5;
+  std::size_t lines = 0;
+  for (const auto& s : plot.series)
+    if (s.style != SeriesStyle::band) lines += legend_lines(s, legend_text).size();
+  return int(lines) * (bbox[3] - bbox[2] + 5) + 5;
 }
 
 std::pair<int, int> figure_size(const Figure& figure) {
@@ -421,7 +457,8 @@ vtkSmartPointer<vtkImageData> render_figure(const Figure& figure) {
   if (figure.panels.empty()) throw std::invalid_argument("a figure needs at least one panel");
   const auto [width, height] = figure_size(figure);
   OffscreenView view(width, height);
-  draw_figure(figure, view);
+  std::vector<FittedText> titles;
+  draw_figure(figure, view, titles);
   return view.capture();
 }
 
@@ -429,10 +466,12 @@ std::vector<PanelLayout> figure_layout(const Figure& figure) {
   if (figure.panels.empty()) throw std::invalid_argument("a figure needs at least one panel");
   const auto [width, height] = figure_size(figure);
   OffscreenView view(width, height);
-  const auto charts = draw_figure(figure, view);
+  std::vector<FittedText> titles;
+  const auto charts = draw_figure(figure, view, titles);
   view.capture();
   std::vector<PanelLayout> out;
-  for (const auto& chart : charts) {
+  for (std::size_t i = 0; i < charts.size(); ++i) {
+    const auto& chart = charts[i];
     PanelLayout l;
     const float* x0 = chart->GetAxis(vtkAxis::BOTTOM)->GetPoint1();
     const float* x1 = chart->GetAxis(vtkAxis::BOTTOM)->GetPoint2();
@@ -442,6 +481,13 @@ std::vector<PanelLayout> figure_layout(const Figure& figure) {
     l.legend_shown = chart->GetShowLegend();
     l.legend_inline = chart->GetLegend()->GetInline();
     l.legend_point = {point.GetX(), point.GetY()};
+    l.title = titles[i].text;
+    l.title_font_size = titles[i].size;
+    for (vtkIdType k = 0; k < chart->GetNumberOfPlots(); ++k) {
+      auto* labels = chart->GetPlot(k)->GetLabels();
+      if (chart->GetPlot(k)->GetLegendVisibility() && labels && labels->GetNumberOfValues() > 0)
+        l.legend_lines.push_back(labels->GetValue(0));
+    }
     out.push_back(l);
   }
   return out;
@@ -451,7 +497,8 @@ void write_figure_svg(const Figure& figure, const std::filesystem::path& file) {
   if (figure.panels.empty()) throw std::invalid_argument("a figure needs at least one panel");
   const auto [width, height] = figure_size(figure);
   OffscreenView view(width, height);
-  draw_figure(figure, view);
+  std::vector<FittedText> titles;
+  draw_figure(figure, view, titles);
   view.capture();  // lays the charts out
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
   auto exporter = vtkSmartPointer<vtkSVGExporter>::New();
@@ -465,18 +512,20 @@ void write_figure_svg(const Figure& figure, const std::filesystem::path& file) {
 
 namespace {
 
-std::vector<vtkSmartPointer<vtkChartXY>> draw_figure(const Figure& figure, OffscreenView& view) {
+std::vector<vtkSmartPointer<vtkChartXY>> draw_figure(const Figure& figure, OffscreenView& view,
+                                                     std::vector<FittedText>& titles) {
   std::vector<vtkSmartPointer<vtkChartXY>> charts;
+  titles.clear();
   const int columns = std::clamp(figure.columns, 1, int(figure.panels.size()));
   const int rows = (int(figure.panels.size()) + columns - 1) / columns;
   const int title_h = figure.title.empty() ? 0 : kTitleHeight;
   const auto [width, height] = figure_size(figure);
   auto actor = vtkSmartPointer<vtkContextActor>::New();
   const auto colors = name_indices(figure);
-  const int legend_w = legend_width(figure);
+  const int legend_w = legend_width(figure), legend_text = legend_text_width(figure);
   for (std::size_t i = 0; i < figure.panels.size(); ++i) {
     const int r = int(i) / columns, c = int(i) % columns;
-    auto chart = make_chart(figure.panels[i], colors);
+    auto chart = make_chart(figure.panels[i], colors, legend_text);
     // Every panel's plot area at the same place in its panel, so that stacked panels share
     // their axes' ends: room on the left for tick labels and the axis title, below for the
     // same, above for the panel's title, and on the right for the widest legend.
@@ -487,26 +536,39 @@ std::vector<vtkSmartPointer<vtkChartXY>> draw_figure(const Figure& figure, Offsc
                             float(figure.panel_width - kLeftMargin - legend_w),
                             float(figure.panel_height - kBottomMargin - kTopMargin)));
     // The legend's point is its lower-left corner: its top level with the plot area's.
-    chart->GetLegend()->SetPoint(vtkVector2f(
-        x0 + float(figure.panel_width - legend_w + 8),
-        y0 + float(figure.panel_height - kTopMargin - legend_height(figure.panels[i]))));
+    chart->GetLegend()->SetPoint(
+        vtkVector2f(x0 + float(figure.panel_width - legend_w + 8),
+                    y0 + float(figure.panel_height - kTopMargin -
+                               legend_height(figure.panels[i], legend_text))));
+    // vtkChartXY centres the title over the plot area. One too wide for that (a run named
+    // by several scene keys) goes higher, above the top tick label and the legend, across
+    // the whole panel and no further, or it would run into the next panel.
+    const int plot_w = figure.panel_width - kLeftMargin - legend_w;
+    const auto& title = figure.panels[i].title;
+    auto fitted = fit_text(title, plot_w + 8, kTitleFont, 10, true);
+    if (fitted.text == title) {
+      chart->SetTitle(fitted.text);
+      chart->GetTitleProperties()->SetFontSize(fitted.size);
+    } else {
+      fitted = fit_text(title, figure.panel_width - 8, kTitleFont, 8, true);
+      chart->SetTitle("");
+      auto text = vtkSmartPointer<ContextText>::New();
+      text->Set(fitted.text, x0 + 0.5f * float(figure.panel_width),
+                y0 + float(figure.panel_height - 10), fitted.size, true);
+      actor->GetScene()->AddItem(text);
+    }
+    titles.push_back(fitted);
     actor->GetScene()->AddItem(chart);
     charts.push_back(chart);
   }
-  view.renderer()->AddActor(actor);
   if (title_h > 0) {
-    auto text = vtkSmartPointer<vtkTextActor>::New();
-    text->SetInput(figure.title.c_str());
-    auto* prop = text->GetTextProperty();
-    prop->SetFontFamilyToArial();
-    prop->SetBold(true);
-    prop->SetColor(0, 0, 0);
-    prop->SetJustificationToCentered();
-    prop->SetVerticalJustificationToCentered();
-    prop->SetFontSize(fitting_font_size(figure.title, prop, width - 16, 18));
-    text->SetDisplayPosition(width / 2, height - title_h / 2);
-    view.renderer()->AddActor2D(text);
+    // In the charts' scene, so that the SVG has it as text too.
+    const auto fitted = fit_text(figure.title, width - 16, 18, 8, true);
+    auto text = vtkSmartPointer<ContextText>::New();
+    text->Set(fitted.text, 0.5f * float(width), float(height - title_h / 2), fitted.size, true);
+    actor->GetScene()->AddItem(text);
   }
+  view.renderer()->AddActor(actor);
   return charts;
 }
 

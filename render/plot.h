@@ -91,6 +91,9 @@ struct PanelLayout {
   bool legend_shown = false;
   bool legend_inline = true;
   std::array<float, 2> legend_point;
+  std::string title;  // as drawn: shrunk to fit the panel, its middle cut when even that fails
+  int title_font_size = 0;
+  std::vector<std::string> legend_lines;  // as drawn: long entries wrapped onto several lines
 };
 std::vector<PanelLayout> figure_layout(const Figure& figure);
 

@@ -21,11 +21,13 @@ static void describe(OutputConfig& o, Schema& s) {
   s.number("output.interval_s", &o.interval, "s", 1, 1e-6, 1e7,
            "Simulated time between snapshots.");
   s.flag("output.particles", &o.particles, "Write the particles.pvd series for ParaView.");
-  s.flag("output.frames", &o.frames, "Render a PNG of the column at every snapshot.");
+  s.flag("output.frames", &o.frames,
+         "Render a PNG of the column at every snapshot, and Fig. 11 (its panels at "
+         "instruments.profile_times_min).");
   s.flag("output.fields", &o.fields,
          "Write fields.pvd: layer suspension density and concentration at every snapshot.");
   s.flag("output.vector_figures", &o.vector_figures,
-         "Write Figs. 12-18 as SVG too (vector graphics for papers), beside the PNGs.");
+         "Write Figs. 11-18 as SVG too (vector graphics for papers), beside the PNGs.");
   s.integer("output.frame_width", &o.frame_width, 16, 8192, "Frame width, pixels.");
   s.integer("output.frame_height", &o.frame_height, 16, 8192, "Frame height, pixels.");
 }

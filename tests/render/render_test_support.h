@@ -69,6 +69,20 @@ inline int pixels_of(vtkImageData* image, std::array<unsigned char, 3> rgb, int 
   return n;
 }
 
+// Dark pixels (every channel below 128: text, lines) in the columns [x0, x1) and rows
+// [y0, y1) of an RGB image (rows from the bottom).
+inline int dark_pixels(vtkImageData* image, int x0, int x1, int y0, int y1) {
+  int dims[3];
+  image->GetDimensions(dims);
+  int n = 0;
+  for (int j = std::max(y0, 0); j < std::min(y1, dims[1]); ++j)
+    for (int i = std::max(x0, 0); i < std::min(x1, dims[0]); ++i) {
+      const auto* px = static_cast<unsigned char*>(image->GetScalarPointer(i, j, 0));
+      if (px[0] < 128 && px[1] < 128 && px[2] < 128) ++n;
+    }
+  return n;
+}
+
 inline std::string read_text(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   std::stringstream text;

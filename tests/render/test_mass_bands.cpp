@@ -67,6 +67,39 @@ TEST(MassBands, MatchesBaseline) {
   EXPECT_TRUE(result.passed) << result.message;
 }
 
+TEST(MassBands, PanelTitlesStayWithinTheirPanel) {
+  // Runs that `sedem render` names by three scene keys: each title in its own panel.
+  auto f = bands_figure();
+  f.title.clear();
+  f.samples[0].label = "integrator.local_steps=true, sample.seed=7, sample.simulated_count=1500";
+  f.samples[1].label = "integrator.local_steps=false, sample.seed=8, sample.simulated_count=3000";
+  const auto image = render::render_mass_bands(f);
+  int dims[3];
+  image->GetDimensions(dims);
+  const int top = dims[1] - 6, bottom = dims[1] - 24;  // the top row's titles
+  EXPECT_EQ(test::dark_pixels(image, 0, 3, bottom, top), 0);
+  EXPECT_EQ(test::dark_pixels(image, f.panel_width - 3, f.panel_width + 3, bottom, top), 0);
+  EXPECT_GT(test::dark_pixels(image, 0, f.panel_width, bottom, top), 100);
+}
+
+TEST(MassBands, SvgHoldsTheColumnAsVectorGraphics) {
+  const auto base = test::output_dir() / "mass_bands_vector";
+  render::write_mass_bands(bands_figure(), base, true);
+  auto svg = base;
+  svg += ".svg";
+  ASSERT_TRUE(std::filesystem::exists(svg));
+  const auto text = test::read_text(svg);
+  EXPECT_NE(text.find("width=\"650\" height=\"794\""), std::string::npos);  // as the PNG
+  std::size_t polygons = 0;
+  for (auto at = text.find("<polygon"); at != std::string::npos; at = text.find("<polygon", at + 1))
+    ++polygons;
+  EXPECT_GT(polygons, 4u * 40u);  // every band of the four columns, and the grains
+  EXPECT_NE(text.find("<line"), std::string::npos);
+  EXPECT_NE(text.find(">Mass in the column</text>"), std::string::npos);
+  EXPECT_NE(text.find(">sample 2, t = 300 s</text>"), std::string::npos);
+  EXPECT_NE(text.find("\u00d7"), std::string::npos);  // the zooms' magnification
+}
+
 // The grey at a depth fraction (0 bottom, 1 top) of the only panel's column.
 int grey_at(vtkImageData* image, double fraction) {
   const double col_y0 = 26, col_h = 380 - 30 - col_y0;

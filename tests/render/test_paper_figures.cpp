@@ -118,6 +118,8 @@ TEST(PaperFigures, Fig13AveragesOverBandsThatFollowTheParticleCount) {
   EXPECT_EQ(panel.y.unit, "kg/m³");
   EXPECT_EQ(panel.y.column_name(), "suspension_density_kg_m3");
   EXPECT_EQ(panel.x.title(), "distance below the bulb's top (cm; bands of 0.78 cm)");
+  // The axis runs to the bulb's tip and says so, though the last layer's centre is short of it.
+  EXPECT_EQ(render::axis_ticks(panel, true).labels.back(), "14");
   // t = 0 first (homogeneous, dashed, black), then per time a spread band and its means.
   ASSERT_EQ(panel.series.size(), 1u + 2u * 3u);
   EXPECT_EQ(panel.series[0].name, "t = 0 (homogeneous)");

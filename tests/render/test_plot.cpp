@@ -7,6 +7,7 @@
 #include "render/image_compare.h"
 #include "render/offscreen_view.h"
 #include "render/plot.h"
+#include "render/text_fit.h"
 #include "render_test_support.h"
 
 namespace sedem {
@@ -117,6 +118,10 @@ TEST(Plot, SvgHoldsTheFigureAsVectorGraphics) {
   EXPECT_NE(text.find("Settling"), std::string::npos);       // the panel's title as text
   EXPECT_NE(text.find("percent finer"), std::string::npos);  // an axis title
   EXPECT_NE(text.find("<path"), std::string::npos);          // the curves as paths
+  // The figure's title as text in the picture, not only as the document's <title>.
+  const auto title = text.find("Settling in kg/m³");
+  ASSERT_NE(title, std::string::npos);
+  EXPECT_NE(text.find("Settling in kg/m³", title + 1), std::string::npos);
   auto png = base;
   png += ".png";
   EXPECT_TRUE(std::filesystem::exists(png));
@@ -135,6 +140,76 @@ TEST(Plot, LegendsSitOutsideThePlotArea) {
   }
   // The right panel's legend stays inside its own panel.
   EXPECT_LT(layout[1].legend_point[0], 2.0f * float(f.panel_width));
+}
+
+// What `sedem render` names runs that differ in three scene keys.
+const std::string kLongRun =
+    "integrator.local_steps=false, sample.seed=8, sample.simulated_count=3000";
+
+render::Figure long_names_figure() {
+  render::Figure f;
+  f.columns = 2;
+  f.panel_width = 520;
+  f.panel_height = 340;
+  for (int k = 0; k < 2; ++k) {
+    auto p = sample_plot();
+    p.title = kLongRun;
+    p.series[0].name = kLongRun;
+    p.series[1].name = "integrator.local_steps=true, sample.seed=7, sample.simulated_count=1500";
+    f.panels.push_back(p);
+  }
+  return f;
+}
+
+std::string without_spaces(std::string s) {
+  std::erase(s, ' ');
+  return s;
+}
+
+TEST(Plot, LongLegendEntriesWrapBesideTheData) {
+  const auto f = long_names_figure();
+  const auto layout = render::figure_layout(f);
+  ASSERT_EQ(layout.size(), 2u);
+  for (std::size_t i = 0; i < layout.size(); ++i) {
+    const auto& l = layout[i];
+    // The plot area keeps most of its panel (one line per name left it none).
+    EXPECT_GT(l.plot_area[2] - l.plot_area[0], 0.4f * float(f.panel_width)) << i;
+    EXPECT_GT(l.legend_point[0], l.plot_area[2]) << i;
+    // Every line ends inside the panel: the legend's padding and line sample, then its text.
+    const float right = float((i + 1) * std::size_t(f.panel_width));
+    for (const auto& line : l.legend_lines)
+      EXPECT_LE(l.legend_point[0] + 35.0f + float(render::text_width(line, 11)), right) << line;
+    // Nothing of the names is lost.
+    std::string joined;
+    for (const auto& line : l.legend_lines) joined += line;
+    EXPECT_EQ(without_spaces(joined),
+              without_spaces(f.panels[i].series[0].name + f.panels[i].series[1].name));
+  }
+}
+
+TEST(Plot, PanelTitlesStayWithinTheirPanel) {
+  auto f = long_names_figure();
+  for (auto& p : f.panels) p.series = sample_plot().series;  // the titles alone are long
+  const auto image = render::render_figure(f);
+  int dims[3];
+  image->GetDimensions(dims);
+  // The panels' title band: below the figure's title (none here), above the plot areas.
+  const int top = dims[1], bottom = dims[1] - 24;
+  EXPECT_EQ(test::dark_pixels(image, 0, 3, bottom, top), 0);  // not cut at the image's edge
+  EXPECT_EQ(test::dark_pixels(image, dims[0] - 3, dims[0], bottom, top), 0);
+  // The two titles do not meet at the panels' boundary.
+  EXPECT_EQ(test::dark_pixels(image, f.panel_width - 3, f.panel_width + 3, bottom, top), 0);
+  EXPECT_GT(test::dark_pixels(image, 0, dims[0], bottom, top), 200);  // but they are drawn
+  for (const auto& l : render::figure_layout(f)) {
+    EXPECT_GE(l.title_font_size, 8);
+    EXPECT_EQ(l.title, kLongRun);  // whole: a panel's width holds three keys
+  }
+  // Titles too wide for the plot area are drawn in the charts' scene: the SVG has them.
+  const auto base = test::output_dir() / "plot_long_titles";
+  render::write_figure(f, base, true);
+  auto svg = base;
+  svg += ".svg";
+  EXPECT_NE(test::read_text(svg).find(kLongRun), std::string::npos);
 }
 
 std::vector<std::string> labels_of(double lo, double hi, bool log) {
