@@ -146,7 +146,8 @@ class Engine {
   // Local time stepping: each grain is coasting (on its exact free trajectory `flight_` from
   // t0_ until t1_), a member of the common step (in state_, at index member_), or settled (a
   // frozen grain no member can reach, kept out of state_), or retired (below every instrument,
-  // falling on flight_ from t0_ onto the coarse bed at height land_y_). See engine_local.cpp.
+  // falling on flight_ from t0_ onto the coarse bed, to rest at (t1_, land_y_)). See
+  // engine_local.cpp.
   enum : std::uint8_t { kCoasting = 0, kMoving = 1, kFrozen = 2, kSettled = 3, kRetired = 4 };
   bool local_ = false;
   bool members_changed_ = false;

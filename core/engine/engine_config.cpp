@@ -57,7 +57,8 @@ void describe(IntegratorConfig& c, Schema& s) {
   s.flag("integrator.retire_below_instruments", &c.retire_below,
          "exponential with local_steps and at least one instrument: a grain that falls below "
          "the lowest instrument (less 1 cm) leaves the simulation and falls freely onto a coarse "
-         "bed (columns one largest grain wide, packed at 0.8), where it is drawn without "
+         "bed (columns one largest grain wide, packed at 0.8, each grain in the lowest of the five "
+         "nearest), where it is drawn without "
          "contacts. No reading can change: nothing there rises back to an instrument.");
   s.number("integrator.max_coast_s", &c.max_coast, "s", 1, 1e-6, 1e6,
            "exponential with local_steps: the longest window a free grain coasts with its drag "

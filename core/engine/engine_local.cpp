@@ -250,24 +250,31 @@ void Engine::move_deposit(std::uint32_t id, double x, double y) {
 void Engine::retire(std::uint32_t id, double t, const FreeFlight::Point& p) {
   const double r = 0.5 * sample_.particles.diameter[id];
   const double hw = model_.half_width;
-  const std::size_t columns = bed_.size();
-  const auto c = std::size_t(std::clamp((p.x + hw) / bed_column_, 0.0, double(columns - 1)));
-  const double land = std::min(p.y, bed_[c] + r);
-  bed_[c] += std::numbers::pi * r * r / (bed_column_ * kBedPacking);
+  const long columns = long(bed_.size());
+  const long c = std::clamp(long((p.x + hw) / bed_column_), 0L, columns - 1);
+  // It comes to rest in the lowest column within two of its own (nearest first): a pile
+  // spreads, where one column for each grain would grow towers.
+  long to = c;
+  for (long k : {c - 1, c + 1, c - 2, c + 2})
+    if (k >= 0 && k < columns && bed_[std::size_t(k)] < bed_[std::size_t(to)]) to = k;
+  const double land = std::min(p.y, bed_[std::size_t(to)] + r);
+  bed_[std::size_t(to)] += std::numbers::pi * r * r / (bed_column_ * kBedPacking);
   flight_[id] = flight_of(id, p);
   t0_[id] = t;
-  t1_[id] = HUGE_VAL;  // its heap entry, if any, is stale
+  // A retired grain has no window (its heap entry, if any, is stale): t1_ holds the x of its
+  // place on the bed.
+  t1_[id] = std::clamp(p.x + double(to - c) * bed_column_, -hw + r, hw - r);
   land_y_[id] = land;
   kind_[id] = kRetired;
   if (model_.contact) boxes_.clear(id);
-  move_deposit(id, p.x, land);
+  move_deposit(id, t1_[id], land);
   ++stats_.retired;
 }
 
 FreeFlight::Point Engine::retired_at(std::uint32_t id, double t) const {
   const FreeFlight::Point q = flight_[id].at(std::max(0.0, t - t0_[id]));
   if (q.y > land_y_[id]) return q;
-  return {q.x, land_y_[id], 0, 0};
+  return {t1_[id], land_y_[id], 0, 0};
 }
 
 // Members (moving or frozen) whose disc is wholly below the retirement height retire.
