@@ -300,9 +300,13 @@ InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<M
       for (std::size_t k = 0; k < p.size(); ++k) curves[k].push_back(p[k]);
     }
     const double tail = 0.5 * (1.0 - options.coverage);
-    for (auto& c : curves) {
-      out.lower.push_back(quantile(c, tail));
-      out.upper.push_back(quantile(c, 1.0 - tail));
+    // The smoothing's bias, which the replicas (all at the chosen lambda) cannot show: how far
+    // the curve moves when the data are fitted with hardly any smoothing.
+    const auto rough = curve_of(problem.solve(measured, 1e-6 * out.lambda, x));
+    for (std::size_t k = 0; k < curves.size(); ++k) {
+      const double bias = std::abs(rough[k] - out.percent_finer[k]);
+      out.lower.push_back(quantile(curves[k], tail) - bias);
+      out.upper.push_back(quantile(curves[k], 1.0 - tail) + bias);
     }
   }
   return out;

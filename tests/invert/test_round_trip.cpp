@@ -119,7 +119,8 @@ double coverage(const Scene& scene, invert::Test test, int copies, int replicas)
 TEST(Band, CoversTheTruthOverNoisyCopies) {
   Scene s = smooth_scene();
   s.sample.size_count = 220;
-  EXPECT_GE(coverage(s, invert::Test::hydrometer, 100, 100), 0.75);
+  // 0.96 with the smoothing's bias in the band; 0.84 without it (the noise alone).
+  EXPECT_GE(coverage(s, invert::Test::hydrometer, 100, 100), 0.88);
 }
 
 }  // namespace
