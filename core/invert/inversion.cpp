@@ -305,9 +305,15 @@ InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<M
     const auto rough = curve_of(problem.solve(measured, 1e-6 * out.lambda, x));
     for (std::size_t k = 0; k < curves.size(); ++k) {
       const double bias = std::abs(rough[k] - out.percent_finer[k]);
-      out.lower.push_back(quantile(curves[k], tail) - bias);
-      out.upper.push_back(quantile(curves[k], 1.0 - tail) + bias);
+      out.lower.push_back(std::max(0.0, quantile(curves[k], tail) - bias));
+      out.upper.push_back(std::min(100.0, quantile(curves[k], 1.0 - tail) + bias));
     }
+    // The bias is not monotone in d: the band's edges are made so again, outwards (each lower
+    // edge no higher than any to its right, each upper no lower than any to its left).
+    for (std::size_t k = out.lower.size(); k-- > 1;)
+      out.lower[k - 1] = std::min(out.lower[k - 1], out.lower[k]);
+    for (std::size_t k = 1; k < out.upper.size(); ++k)
+      out.upper[k] = std::max(out.upper[k], out.upper[k - 1]);
   }
   return out;
 }
