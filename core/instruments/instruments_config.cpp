@@ -32,8 +32,11 @@ void describe(InstrumentsConfig& c, Schema& s) {
            "Length of the bulb's bottom cone (shape only; length and volume are the 152H's).");
   s.number("instruments.hydrometer.shoulder_length_cm", &c.hydrometer_shoulder_length, "cm", 1e-2,
            0, 7, "Length of the cone from the bulb to the stem.");
-  s.flag("instruments.reference.hindered", &c.reference_hindered,
-         "Reference solution: Richardson-Zaki hindered settling at the initial solid fraction.");
+  s.choice("instruments.reference.settling", &c.reference_settling,
+           {"free", "richardson_zaki", "local_voidage"},
+           "Reference solution: each size at its clear-fluid terminal velocity (free), slowed by "
+           "Richardson-Zaki at the initial solids, or at the drag law's speed at the local "
+           "voidage, as the DEM's Di Felice drag hinders it (local_voidage).");
   s.number("instruments.reference.richardson_zaki_exponent", &c.reference_richardson_zaki_exponent,
            "", 1, 0, 10, "Richardson-Zaki exponent n (4.65 in the Stokes regime).");
   s.number("instruments.reference.bed_packing", &c.reference_bed_packing, "", 1, 0.05, 1,

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace sedem {
@@ -32,7 +33,7 @@ struct InstrumentsConfig {
   double hydrometer_shoulder_length = 0.020;  // m
 
   // The continuum reference solution.
-  bool reference_hindered = false;
+  std::string reference_settling = "local_voidage";
   double reference_richardson_zaki_exponent = 4.65;
   double reference_bed_packing = 0.6;
 };

@@ -106,8 +106,9 @@ ForwardModel::ForwardModel(const Scene& scene, Test test, Grid grid, std::vector
   // Each bin's size classes, evenly spaced in log d across it.
   const auto& cfg = scene.instruments;
   const auto& d = grid_.nodes;
+  local_voidage_ = cfg.reference_settling == "local_voidage" && scene.forces.drag == "di_felice";
   hindrance_ =
-      cfg.reference_hindered
+      cfg.reference_settling == "richardson_zaki"
           ? std::pow(1.0 - suspension_.initial_concentration / suspension_.particle_density,
                      cfg.reference_richardson_zaki_exponent)
           : 1.0;
@@ -138,7 +139,7 @@ double ForwardModel::read_fields(const LayerFields& fields) const {
   return 0;
 }
 
-double ForwardModel::read(const Eigen::VectorXd& x, double time) const {
+ReferenceSolution ForwardModel::reference(const Eigen::VectorXd& x) const {
   std::vector<SettlingClass> classes;
   classes.reserve(class_diameter_.size());
   const double c0 = suspension_.initial_concentration;
@@ -146,18 +147,27 @@ double ForwardModel::read(const Eigen::VectorXd& x, double time) const {
     const double share = x(Eigen::Index(k / std::size_t(subclasses_))) / subclasses_;
     classes.push_back({class_diameter_[k], c0 * share, class_velocity_[k]});
   }
-  const ReferenceSolution reference(std::move(classes), scene_.cylinder,
-                                    suspension_.particle_density,
-                                    scene_.instruments.reference_bed_packing);
-  return read_fields(reference.layer_fields(time, layers_, scene_.fluid));
+  const double rho_p = suspension_.particle_density;
+  const double packing = scene_.instruments.reference_bed_packing;
+  if (local_voidage_)
+    return ReferenceSolution::from_fronts(
+        local_voidage_fronts(classes, rho_p, scene_.fluid, scene_.forces.drag), scene_.cylinder,
+        rho_p, packing);
+  return ReferenceSolution(classes, scene_.cylinder, rho_p, packing);
+}
+
+double ForwardModel::read(const Eigen::VectorXd& x, double time) const {
+  return read_fields(reference(x).layer_fields(time, layers_, scene_.fluid));
 }
 
 Eigen::VectorXd ForwardModel::readings(const Eigen::VectorXd& x) const {
   if (std::size_t(x.size()) != grid_.bins())
     throw std::invalid_argument("forward model: " + std::to_string(x.size()) + " shares for " +
                                 std::to_string(grid_.bins()) + " bins");
+  const ReferenceSolution settled = reference(x);
   Eigen::VectorXd r(Eigen::Index(times_.size()));
-  for (std::size_t i = 0; i < times_.size(); ++i) r(Eigen::Index(i)) = read(x, times_[i]);
+  for (std::size_t i = 0; i < times_.size(); ++i)
+    r(Eigen::Index(i)) = read_fields(settled.layer_fields(times_[i], layers_, scene_.fluid));
   return r;
 }
 

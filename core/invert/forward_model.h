@@ -9,6 +9,7 @@
 #include "core/instruments/hydrometer.h"
 #include "core/instruments/pipette.h"
 #include "core/instruments/suspension.h"
+#include "core/reference/reference_field.h"
 #include "core/scene/scene.h"
 
 namespace sedem::invert {
@@ -65,8 +66,9 @@ class ForwardModel {
   const Grid& grid() const { return grid_; }
   const std::vector<double>& times() const { return times_; }
   const Suspension& suspension() const { return suspension_; }
-  // True when the readings are affine in x (sphere, pipette).
-  bool affine() const { return test_ != Test::hydrometer; }
+  // True when the readings are affine in x: the sphere's and the pipette's, unless the
+  // settling speeds depend on the voidage, i.e. on x itself (local_voidage).
+  bool affine() const { return test_ != Test::hydrometer && !local_voidage_; }
 
   Eigen::VectorXd readings(const Eigen::VectorXd& x) const;
   // d readings / d x at x: exact columns for the affine tests, one-sided differences of
@@ -93,6 +95,7 @@ class ForwardModel {
   double model_diameter(double time, double value) const;
 
  private:
+  ReferenceSolution reference(const Eigen::VectorXd& x) const;
   double read(const Eigen::VectorXd& x, double time) const;
   double read_fields(const LayerFields& fields) const;
 
@@ -108,6 +111,7 @@ class ForwardModel {
   Pipette pipette_;
   double clear_reading_ = 0;                             // 152H in the clear liquid, g/L
   double hindrance_ = 1;                                 // on every terminal velocity
+  bool local_voidage_ = false;                           // speeds set by the voidage
   std::vector<double> class_diameter_, class_velocity_;  // bins x subclasses
 };
 

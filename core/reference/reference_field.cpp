@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "core/physics/drag.h"
@@ -9,6 +10,23 @@
 #include "core/scene/scene.h"
 
 namespace sedem {
+namespace {
+
+// c_m' / c_m across a front falling at s, class m at v below and v' above (continuous flux).
+// v' < s for every finer class unless two classes settle at nearly the same speed, where the
+// ratio is held to [1/2, 2]: the voidage moves their speeds by well under their spacing.
+double scale_through_front(double s, double v, double v_above) {
+  return s - v_above > 0 ? std::clamp((s - v) / (s - v_above), 0.5, 2.0) : 2.0;
+}
+
+std::vector<SettlingFront> fronts_of(const std::vector<SettlingClass>& classes) {
+  std::vector<SettlingFront> fronts;
+  fronts.reserve(classes.size());
+  for (const auto& c : classes) fronts.push_back({c.diameter, c.velocity, c.concentration});
+  return fronts;
+}
+
+}  // namespace
 
 double reference_terminal_velocity(const std::string& drag, double diameter,
                                    double particle_density, const Fluid& fluid) {
@@ -18,11 +36,19 @@ double reference_terminal_velocity(const std::string& drag, double diameter,
   throw std::invalid_argument("reference solution: no terminal velocity for drag '" + drag + "'");
 }
 
+ReferenceSettling reference_settling(const std::string& name) {
+  if (name == "free") return ReferenceSettling::free;
+  if (name == "richardson_zaki") return ReferenceSettling::richardson_zaki;
+  if (name == "local_voidage") return ReferenceSettling::local_voidage;
+  throw std::invalid_argument("reference solution: unknown settling '" + name +
+                              "' (free, richardson_zaki, local_voidage)");
+}
+
 std::vector<SettlingClass> settling_classes(const std::vector<SizeClass>& classes,
                                             double initial_concentration, double particle_density,
                                             const Fluid& fluid, const std::string& drag,
                                             const ReferenceOptions& options) {
-  const double hindrance = options.hindered
+  const double hindrance = options.settling == ReferenceSettling::richardson_zaki
                                ? std::pow(1.0 - initial_concentration / particle_density,
                                           options.richardson_zaki_exponent)
                                : 1.0;
@@ -38,29 +64,110 @@ std::vector<SettlingClass> settling_classes(const std::vector<SizeClass>& classe
   return out;
 }
 
-ReferenceSolution::ReferenceSolution(std::vector<SettlingClass> classes, const Cylinder& cylinder,
-                                     double particle_density, double bed_packing)
-    : classes_(std::move(classes)),
+std::vector<SettlingFront> voidage_fronts(
+    const std::vector<SettlingClass>& classes, double particle_density,
+    const std::function<double(std::size_t, double)>& velocity) {
+  std::vector<std::size_t> order(classes.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return classes[a].velocity < classes[b].velocity;
+  });
+  // The region below every front: the initial suspension.
+  std::vector<double> c(order.size()), v(order.size()), v_above(order.size());
+  double solids = 0;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    c[k] = classes[order[k]].concentration;
+    solids += c[k];
+  }
+  auto speeds = [&](std::size_t present, double total, std::vector<double>& out) {
+    const double voidage = 1.0 - total / particle_density;
+    for (std::size_t m = 0; m < present; ++m) out[m] = velocity(order[m], voidage);
+  };
+  speeds(order.size(), solids, v);
+  std::vector<SettlingFront> fronts(order.size());
+  double previous_speed = std::numeric_limits<double>::infinity();
+  for (std::size_t k = order.size(); k-- > 0;) {
+    // Class k ends here; a front cannot overtake the one below it (equal speeds: a front
+    // where both end together).
+    const double s = std::min(v[k], previous_speed);
+    previous_speed = s;
+    // The finer classes above: a fixed point in their solids, which differ from below by a
+    // few per cent of class k's own share, so a handful of iterations reach round-off.
+    double above = solids - c[k];
+    for (int it = 0; it < 8; ++it) {
+      speeds(k, above, v_above);
+      double next = 0;
+      for (std::size_t m = 0; m < k; ++m) next += c[m] * scale_through_front(s, v[m], v_above[m]);
+      const bool converged = std::abs(next - above) <= 1e-14 * solids;
+      above = next;
+      if (converged) break;
+    }
+    speeds(k, above, v_above);
+    for (std::size_t m = 0; m < k; ++m) {
+      c[m] *= scale_through_front(s, v[m], v_above[m]);
+      v[m] = v_above[m];
+    }
+    fronts[k] = {classes[order[k]].diameter, s, solids - above};
+    solids = above;
+  }
+  return fronts;
+}
+
+std::vector<SettlingFront> local_voidage_fronts(const std::vector<SettlingClass>& classes,
+                                                double particle_density, const Fluid& fluid,
+                                                const std::string& drag) {
+  double solids = 0;
+  for (const auto& c : classes) solids += c.concentration;
+  const double initial_voidage = 1.0 - solids / particle_density;
+  if (drag != "di_felice" || !(solids > 0)) return fronts_of(classes);
+  std::vector<double> exponent(classes.size());
+  for (std::size_t n = 0; n < classes.size(); ++n)
+    exponent[n] = std::log(drag::di_felice_terminal_velocity(classes[n].diameter, particle_density,
+                                                             fluid, initial_voidage) /
+                           drag::di_felice_terminal_velocity(classes[n].diameter, particle_density,
+                                                             fluid, 1.0)) /
+                  std::log(initial_voidage);
+  return voidage_fronts(classes, particle_density, [&](std::size_t n, double voidage) {
+    return classes[n].velocity * std::exp(exponent[n] * std::log(voidage));
+  });
+}
+
+ReferenceSolution::ReferenceSolution(const std::vector<SettlingClass>& classes,
+                                     const Cylinder& cylinder, double particle_density,
+                                     double bed_packing)
+    : ReferenceSolution(fronts_of(classes), cylinder, particle_density, bed_packing, 0) {}
+
+ReferenceSolution ReferenceSolution::from_fronts(std::vector<SettlingFront> fronts,
+                                                 const Cylinder& cylinder, double particle_density,
+                                                 double bed_packing) {
+  return ReferenceSolution(std::move(fronts), cylinder, particle_density, bed_packing, 0);
+}
+
+ReferenceSolution::ReferenceSolution(std::vector<SettlingFront> fronts, const Cylinder& cylinder,
+                                     double particle_density, double bed_packing, int)
+    : fronts_(std::move(fronts)),
       cylinder_(cylinder),
       particle_density_(particle_density),
       bed_packing_(bed_packing) {
   if (!(bed_packing_ > 0 && bed_packing_ <= 1))
     throw std::invalid_argument("reference solution: bed packing must be in (0, 1]");
+  std::stable_sort(
+      fronts_.begin(), fronts_.end(),
+      [](const SettlingFront& a, const SettlingFront& b) { return a.speed < b.speed; });
 }
 
 double ReferenceSolution::bed_top(double time) const {
   const double height = cylinder_.height;
   const double bed_density = particle_density_ * bed_packing_;
   double total = 0;
-  for (const auto& c : classes_) total += c.concentration * height;
+  for (const auto& f : fronts_) total += f.jump * height;
   // Class n, uniform at first, has translated down by u_n t: it fills [u_n t, bed top) and
   // the rest of it is in the bed. The bed's top and the suspended mass depend on each other;
   // the map is a contraction (its slope is at most c_0 / (rho_p packing) < 1), so iterate.
   double top = height;
   for (int it = 0; it < 200; ++it) {
     double suspended = 0;  // kg/m^2
-    for (const auto& c : classes_)
-      suspended += c.concentration * std::max(0.0, top - c.velocity * time);
+    for (const auto& f : fronts_) suspended += f.jump * std::max(0.0, top - f.speed * time);
     const double next = height - (total - suspended) / bed_density;
     if (std::abs(next - top) <= 1e-15 * height) return next;
     top = next;
@@ -72,16 +179,16 @@ double ReferenceSolution::concentration(double depth, double time) const {
   const double top = bed_top(time);
   if (depth >= top) return particle_density_ * bed_packing_;
   double c_sum = 0;
-  for (const auto& c : classes_)
-    if (depth >= c.velocity * time) c_sum += c.concentration;
+  for (const auto& f : fronts_)
+    if (depth >= f.speed * time) c_sum += f.jump;
   return c_sum;
 }
 
 double ReferenceSolution::largest_diameter_above(double depth, double time) const {
   const double limit = std::min(depth, bed_top(time));
   double largest = 0;
-  for (const auto& c : classes_)
-    if (c.velocity * time < limit && c.concentration > 0) largest = std::max(largest, c.diameter);
+  for (const auto& f : fronts_)
+    if (f.speed * time < limit && f.jump > 0) largest = std::max(largest, f.diameter);
   return largest;
 }
 
@@ -90,19 +197,17 @@ std::vector<double> ReferenceSolution::layer_solid_volume(double time, std::size
   const double top = bed_top(time);
   const double h = cylinder_.height / static_cast<double>(layers);
   const double area = cylinder_.diameter * cylinder_.slab_thickness();
-  // The suspended mass above depth d (d <= bed top) is sum_{e_n <= d} c_n (d - e_n) with
-  // e_n = u_n t the depth of class n's upper front: swept down the layer boundaries with
-  // the fronts sorted once.
-  std::vector<std::pair<double, double>> fronts;  // (e_n, c_n)
-  for (const auto& c : classes_) fronts.emplace_back(c.velocity * time, c.concentration);
-  std::sort(fronts.begin(), fronts.end());
+  // The suspended mass above depth d (d <= bed top) is sum_{e_n <= d} J_n (d - e_n) with
+  // e_n = s_n t the depth of front n and J_n its jump: swept down the layer boundaries, the
+  // fronts being sorted.
   std::size_t k = 0;
+  const auto& fronts = fronts_;
   double present = 0, moment = 0;  // sum c_n and sum c_n e_n of the fronts above d
   auto cumulative = [&](double d) {
     const double in_suspension = std::min(d, top);
-    while (k < fronts.size() && fronts[k].first <= in_suspension) {
-      present += fronts[k].second;
-      moment += fronts[k].second * fronts[k].first;
+    while (k < fronts.size() && fronts[k].speed * time <= in_suspension) {
+      present += fronts[k].jump;
+      moment += fronts[k].jump * fronts[k].speed * time;
       ++k;
     }
     double m = present * in_suspension - moment;
@@ -127,9 +232,13 @@ LayerFields ReferenceSolution::layer_fields(double time, std::size_t layers,
 ReferenceSolution make_reference(const Scene& scene, const Sample& sample,
                                  const ReferenceOptions& options) {
   const double c0 = sample.section_mass / scene.cylinder.section_volume();
-  return ReferenceSolution(settling_classes(sample.classes, c0, sample.particle_density,
-                                            scene.fluid, scene.forces.drag, options),
-                           scene.cylinder, sample.particle_density, options.bed_packing);
+  auto classes = settling_classes(sample.classes, c0, sample.particle_density, scene.fluid,
+                                  scene.forces.drag, options);
+  if (options.settling == ReferenceSettling::local_voidage)
+    return ReferenceSolution::from_fronts(
+        local_voidage_fronts(classes, sample.particle_density, scene.fluid, scene.forces.drag),
+        scene.cylinder, sample.particle_density, options.bed_packing);
+  return ReferenceSolution(classes, scene.cylinder, sample.particle_density, options.bed_packing);
 }
 
 }  // namespace sedem

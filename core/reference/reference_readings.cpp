@@ -7,7 +7,7 @@ namespace sedem {
 
 ReferenceOptions reference_options(const Scene& scene) {
   ReferenceOptions o;
-  o.hindered = scene.instruments.reference_hindered;
+  o.settling = reference_settling(scene.instruments.reference_settling);
   o.richardson_zaki_exponent = scene.instruments.reference_richardson_zaki_exponent;
   o.bed_packing = scene.instruments.reference_bed_packing;
   return o;

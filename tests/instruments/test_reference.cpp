@@ -101,7 +101,7 @@ TEST(Reference, VelocityFollowsTheScenesDrag) {
   c.diameter = 10e-6;
   c.mass_fraction = 1.0;
   ReferenceOptions o;
-  o.hindered = true;
+  o.settling = ReferenceSettling::richardson_zaki;
   const auto classes = settling_classes({c}, 41.457, 2500, water, "stokes", o);
   EXPECT_NEAR(classes[0].velocity / stokes, 0.925190, 1e-6);
   EXPECT_NEAR(classes[0].concentration, 41.457, 1e-12);
@@ -178,6 +178,95 @@ TEST(Reference, DefaultSceneBiasAndInitialDensity) {
               << " percentage points\n";
     EXPECT_LT(bias, 3.0) << test.test;
   }
+}
+
+}  // namespace
+}  // namespace sedem
+
+namespace sedem {
+namespace {
+
+// Hindrance by the local voidage: one size falls at its speed in the initial suspension, and
+// below its front the concentration is the initial one.
+TEST(LocalVoidage, OneSizeFallsAtItsHinderedSpeed) {
+  const std::vector<SettlingClass> one{{20e-6, 40.0, kU20}};
+  const auto fronts = voidage_fronts(
+      one, 2500.0, [](std::size_t, double eps) { return kU20 * std::pow(eps, 2.7); });
+  ASSERT_EQ(fronts.size(), 1u);
+  EXPECT_NEAR(fronts[0].speed, kU20 * std::pow(1.0 - 40.0 / 2500.0, 2.7), 1e-15);
+  EXPECT_DOUBLE_EQ(fronts[0].jump, 40.0);
+}
+
+// Two sizes, speeds u_n eps^2.7: the coarse front falls at u_B eps_0^2.7; above it the fine
+// size alone, denser by the continuity of its flux through the front,
+//   c_A' (s_B - u_A eps'^2.7) = c_A (s_B - u_A eps_0^2.7), eps' = 1 - c_A' / rho_p,
+// solved here by bisection on c_A'; the fine front then falls at u_A eps'^2.7.
+TEST(LocalVoidage, TwoSizesObeyTheJumpConditions) {
+  const double rho = 2500, ca = 20, cb = 20, a = 2.7;
+  const std::vector<SettlingClass> two{{20e-6, cb, kU20}, {10e-6, ca, kU10}};
+  const double speed[2] = {kU20, kU10};
+  const auto fronts = voidage_fronts(
+      two, rho, [&](std::size_t n, double eps) { return speed[n] * std::pow(eps, a); });
+  ASSERT_EQ(fronts.size(), 2u);
+  const double eps0 = 1 - (ca + cb) / rho;
+  const double sb = kU20 * std::pow(eps0, a);
+  const double flux = ca * (sb - kU10 * std::pow(eps0, a));
+  double lo = ca, hi = 2 * ca;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (mid * (sb - kU10 * std::pow(1 - mid / rho, a)) < flux ? lo : hi) = mid;
+  }
+  const double ca_above = 0.5 * (lo + hi);
+  EXPECT_GT(ca_above, ca);  // the fine size speeds up above the front, so it is denser there
+  EXPECT_NEAR(fronts[1].diameter, 20e-6, 0);
+  EXPECT_NEAR(fronts[1].speed, sb, 1e-15);
+  EXPECT_NEAR(fronts[1].jump, ca + cb - ca_above, 1e-9);
+  EXPECT_NEAR(fronts[0].speed, kU10 * std::pow(1 - ca_above / rho, a), 1e-15);
+  EXPECT_NEAR(fronts[0].jump, ca_above, 1e-9);
+
+  // The field it makes holds the mass at any time, bed included.
+  const Cylinder cyl;
+  const auto ref = ReferenceSolution::from_fronts(fronts, cyl, rho, 0.6);
+  for (double t : {0.0, 300.0, 900.0, 3000.0, 1e5}) {
+    const LayerFields f = ref.layer_fields(t, 4000, Fluid{});
+    double mass = 0;
+    for (double c : f.concentration()) mass += c * f.layer_height();
+    EXPECT_NEAR(mass, (ca + cb) * 0.457, 1e-9) << t;
+  }
+  EXPECT_DOUBLE_EQ(ref.concentration(0.5 * (fronts[0].speed + fronts[1].speed) * 600, 600),
+                   ca_above);
+}
+
+// The scene's Di Felice drag: every front falls slower than the free one, the coarsest at the
+// Di Felice terminal velocity in the initial suspension (eps^(1 - chi) makes that about
+// eps^2.5 at its Re of 0.3); with Stokes drag (no voidage in it) the two are the same.
+TEST(LocalVoidage, FollowsTheScenesDragLaw) {
+  Scene scene;
+  scene.sample.simulated_count = 2000;
+  const Sample sample = build_sample(scene);
+  ReferenceOptions free;
+  free.settling = ReferenceSettling::free;
+  ReferenceOptions local;
+  local.settling = ReferenceSettling::local_voidage;
+  const auto hindered = make_reference(scene, sample, local).fronts();
+  const auto clear = make_reference(scene, sample, free).fronts();
+  ASSERT_EQ(hindered.size(), clear.size());
+  const double eps0 = 1 - 41.456985 / 2500;
+  const double coarsest = hindered.back().diameter;
+  EXPECT_NEAR(hindered.back().speed,
+              drag::di_felice_terminal_velocity(coarsest, 2500, scene.fluid, eps0), 1e-9 * 4e-3);
+  EXPECT_NEAR(hindered.back().speed / clear.back().speed, std::pow(eps0, 2.5), 0.003);
+  for (std::size_t k = 0; k < hindered.size(); ++k) EXPECT_LT(hindered[k].speed, clear[k].speed);
+
+  scene.forces.drag = "stokes";
+  const auto stokes_local = make_reference(scene, sample, local).fronts();
+  const auto stokes_free = make_reference(scene, sample, free).fronts();
+  for (std::size_t k = 0; k < stokes_local.size(); ++k) {
+    EXPECT_DOUBLE_EQ(stokes_local[k].speed, stokes_free[k].speed);
+    EXPECT_DOUBLE_EQ(stokes_local[k].jump, stokes_free[k].jump);
+  }
+  EXPECT_EQ(reference_settling("local_voidage"), ReferenceSettling::local_voidage);
+  EXPECT_THROW(reference_settling("hindered"), std::invalid_argument);
 }
 
 }  // namespace
