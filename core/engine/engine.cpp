@@ -34,6 +34,7 @@ ForceModel force_model(const Scene& scene, double particle_density) {
   m.weight = f.weight;
   m.buoyancy = f.buoyancy;
   m.contact = f.contact;
+  m.suspension_contacts = f.suspension_contacts;
   m.friction = f.contact && f.friction > 0;
   m.lubrication = f.lubrication;
   m.drag = f.drag == "off"      ? DragLaw::off

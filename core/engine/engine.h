@@ -96,6 +96,7 @@ class Engine {
   bool make_room(std::uint32_t id, double t, const FreeFlight::Point& p);
   void note_ahead(std::uint32_t id, double t, const Box& before, double t0_before);
   bool resync_clear_of(std::uint32_t id, const Box& reach);
+  bool passes(std::uint32_t j) const;
   FreeFlight flight_of(std::uint32_t id, const FreeFlight::Point& p) const;
   FreeFlight::Point coasting_at(std::uint32_t id, double t) const;
   void engage(std::uint32_t id, const FreeFlight::Point& p, bool frozen);

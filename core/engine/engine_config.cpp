@@ -10,6 +10,12 @@ void describe(ForcesConfig& c, Schema& s) {
   s.choice("forces.drag", &c.drag, {"di_felice", "stokes", "off"},
            "Drag law: Di Felice with local voidage (Eqs. 7-9), plain Stokes (Eq. 11), or none.");
   s.flag("forces.contact", &c.contact, "Penalty contact between particles and with the walls.");
+  s.flag("forces.suspension_contacts", &c.suspension_contacts,
+         "false: grains in the suspension pass each other and meet only the walls (needs "
+         "local steps and retirement below the instruments, so that the bed is the coarse "
+         "one). Each simulated grain stands for many real ones spread through the slab, so "
+         "its collisions in the section grow with the simulated count; the voidage of the "
+         "drag carries the suspension's hindrance. See docs/engine.md.");
   s.number("forces.stiffness_normal", &c.stiffness_normal, "N/m", 1, 1e-6, 1e9,
            "K_N, normal penalty spring (paper: 1e3).");
   s.number("forces.stiffness_tangential", &c.stiffness_tangential, "N/m", 1, 1e-6, 1e9,

@@ -13,6 +13,7 @@ struct ForcesConfig {
   bool buoyancy = true;
   std::string drag = "di_felice";  // di_felice | stokes | off
   bool contact = true;
+  bool suspension_contacts = true;    // false: free grains pass each other (local steps only)
   double stiffness_normal = 1e3;      // K_N, N/m
   double stiffness_tangential = 1e3;  // K_T, N/m
   double friction = 0.5;              // Coulomb mu_c

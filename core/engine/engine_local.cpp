@@ -64,6 +64,13 @@ constexpr auto kLater = std::greater<Sync>{};
 
 }  // namespace
 
+// Without suspension contacts, a grain that is coasting or moving with the members passes any
+// other such grain: only the walls, the bed (frozen and settled grains) and, among the
+// members, the contacts the projection finds stop it.
+bool Engine::passes(std::uint32_t j) const {
+  return !model_.suspension_contacts && (kind_[j] == kCoasting || kind_[j] == kMoving);
+}
+
 FreeFlight Engine::flight_of(std::uint32_t id, const FreeFlight::Point& p) const {
   const Particles& s = sample_.particles;
   const double d = s.diameter[id], mass = model_.mass(d);
@@ -125,11 +132,15 @@ bool Engine::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool 
                                   : std::hypot(f.vx, f.vy) + terminal * window;
   // A window's box stays within a fraction of the mean spacing: long boxes would crowd the
   // space the others need for theirs and engage grains that are nowhere near each other.
+  // Without suspension contacts the free grains do not look at it, and the window is
+  // bounded by the voidage grid instead: the drag is taken anew about once per cell crossed.
   if (speed > 0) window = std::min(window, travel_ / speed);
   const double shortest =
       speed > 0 ? std::min(window, scene_.integrator.crossing_fraction * r / speed) : window;
   near_.clear();
-  boxes_.overlapping(box(window), id, [&](std::uint32_t j) { near_.push_back(j); });
+  boxes_.overlapping(box(window), id, [&](std::uint32_t j) {
+    if (!passes(j)) near_.push_back(j);
+  });
   for (double w = window; w >= shortest; w *= 0.5) {
     const Box b = box(w);
     if (b.x0 <= -hw || b.x1 >= hw || b.y0 <= 0) continue;
@@ -337,7 +348,7 @@ void Engine::wake_around(std::uint32_t first) {
     if (state_.frozen[k]) continue;
     found.clear();
     boxes_.overlapping(boxes_.box(id), id, [&](std::uint32_t j) {
-      if (kind_[j] == kCoasting || kind_[j] == kSettled) found.push_back(j);
+      if ((kind_[j] == kCoasting && !passes(j)) || kind_[j] == kSettled) found.push_back(j);
     });
     std::sort(found.begin(), found.end());
     const Box reach = boxes_.box(id);
@@ -465,7 +476,8 @@ void Engine::start_local() {
   // Cells about twice the mean spacing: a box spans a few of them and each holds a few boxes.
   const double spacing =
       std::sqrt(2 * cyl.half_width() * cyl.height / double(std::max<std::size_t>(n, 1)));
-  travel_ = kTravel * spacing;
+  travel_ = model_.suspension_contacts ? kTravel * spacing
+                                       : std::max(kTravel * spacing, scene_.forces.voidage_cell);
   registry_cell_ = std::max(spacing, 4 * dmax);
   land_y_.assign(n, 0.0);
   ahead_slot_.assign(n, kNoMember);
@@ -779,9 +791,10 @@ std::string Engine::local_violation() const {
     boxes_.overlapping(boxes_.box(id), id, [&](std::uint32_t j) {
       const int a = kind_[id], b = kind_[j];
       const bool ahead = (a == kCoasting && t0_[id] > time_) || (b == kCoasting && t0_[j] > time_);
-      const bool handled =
-          ahead || (a != kCoasting && b != kCoasting && !(a == kSettled && b == kMoving) &&
-                    !(a == kMoving && b == kSettled));
+      const bool passing = passes(id) && passes(j);
+      const bool handled = ahead || passing ||
+                           (a != kCoasting && b != kCoasting && !(a == kSettled && b == kMoving) &&
+                            !(a == kMoving && b == kSettled));
       if (!handled && found.empty())
         found = "the boxes of " + name(id) + " and " + name(j) + " overlap";
     });

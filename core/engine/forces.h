@@ -16,6 +16,7 @@ enum class DragLaw { off, stokes, di_felice };
 // Constants of the force laws, taken from the scene once.
 struct ForceModel {
   bool weight = true, buoyancy = true, contact = true, friction = true, lubrication = false;
+  bool suspension_contacts = true;  // local steps: coasting grains see each other's boxes
   // false: the force pass only detects contacts; the integrator resolves them as constraints
   // (contact_projection.h) and friction is not represented.
   bool contact_forces = true;

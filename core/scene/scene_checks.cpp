@@ -226,6 +226,16 @@ void check_scene(const Scene& scene, const SceneOrigins& origins) {
                               " (sample.placement.max_area_fraction); lower it");
   }
 
+  const auto& in = scene.instruments;
+  const bool retiring = scene.integrator.method == "exponential" && scene.integrator.local_steps &&
+                        scene.integrator.retire_below &&
+                        (in.hydrometer || in.buoyancy || in.pipette);
+  if (!scene.forces.suspension_contacts && !retiring)
+    check.fail("forces.suspension_contacts",
+               "= false needs grains to retire onto the coarse bed below the instruments "
+               "(integrator.method = exponential, integrator.local_steps = true, "
+               "integrator.retire_below_instruments = true, an instrument enabled): grains "
+               "that passed each other would reach a contact bed overlapping");
   check_instruments(scene, check);
 }
 

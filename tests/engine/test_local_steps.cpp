@@ -121,6 +121,33 @@ TEST(LocalSteps, ACoarseGrainNeverPassesThroughAFineOne) {
   EXPECT_GT(engine.stats().engaged, 0);
 }
 
+// Without suspension contacts the coarse grain falls through the fine one: each ends where it
+// would alone (Stokes drag: exact free paths), and neither ever joined the common step.
+TEST(LocalSteps, WithoutSuspensionContactsACoarseGrainPassesAFineOne) {
+  Scene scene = scene_with("stokes", "exponential");
+  scene.integrator.local_steps = true;
+  scene.forces.suspension_contacts = false;
+  const double coarse = 60e-6, fine = 10e-6;
+  Engine both(scene, sample_of({{0, 0.2, coarse}, {0, 0.19, fine}}));
+  Engine coarse_alone(scene, sample_of({{0, 0.2, coarse}}));
+  Engine fine_alone(scene, sample_of({{0, 0.19, fine}}));
+  const double u = stokes::terminal_velocity(coarse, 2500, Fluid{});
+  const double end = 0.02 / u;  // 2 cm of the coarse grain's fall
+  for (Engine* e : {&both, &coarse_alone, &fine_alone}) e->advance_to(end);
+  const auto& p = both.particles();
+  EXPECT_LT(p.y[0], p.y[1] - 0.005);  // passed it by more than 5 mm
+  EXPECT_NEAR(p.y[0], coarse_alone.particles().y[0], 1e-12);
+  EXPECT_NEAR(p.y[1], fine_alone.particles().y[0], 1e-12);
+  EXPECT_EQ(both.stats().engaged, 0);
+}
+
+// 1500 grains of 70, 30 and 5 um scattered in a box of the section.
+std::vector<test::Grain> crowd(double x0, double x1, double y0, double y1) {
+  return test::scattered(
+      1500, x0, x1, y0, y1, [](int k) { return k % 4 == 0 ? 70e-6 : (k % 4 == 1 ? 30e-6 : 5e-6); },
+      7, 0.0);
+}
+
 // A crowded suspension of coarse and fine grains (many joining and leaving the common step):
 // after every step each grain is inside its box, no window has ended unlooked-at and no two
 // boxes overlap that must not. (A step that a joining grain shortened once let later windows
@@ -130,10 +157,7 @@ TEST(LocalSteps, KeepTheirPromiseInACrowdedSuspension) {
   scene.integrator.local_steps = true;
   scene.integrator.freeze_settled = true;
   const double hw = scene.cylinder.half_width();
-  const auto grains = test::scattered(
-      1500, -0.3 * hw, 0.3 * hw, 0.0005, 0.012,
-      [](int k) { return k % 4 == 0 ? 70e-6 : (k % 4 == 1 ? 30e-6 : 5e-6); }, 7, 0.0);
-  Engine engine(scene, sample_of(grains));
+  Engine engine(scene, sample_of(crowd(-0.3 * hw, 0.3 * hw, 0.0005, 0.012)));
   std::int64_t engaged = 0;
   while (engine.time() < 0.5) {
     engine.step(0.5);
@@ -142,6 +166,29 @@ TEST(LocalSteps, KeepTheirPromiseInACrowdedSuspension) {
     engaged = engine.stats().engaged;
   }
   EXPECT_GT(engaged, 100) << engaged;  // the suspension did crowd the common step
+}
+
+// The same crowd without suspension contacts, across the whole width and retiring below the
+// instruments: the promise holds for what still meets (the walls, and the members' contacts
+// there), and grains join the common step only at the walls: far fewer than with contacts.
+TEST(LocalSteps, KeepTheirPromiseWithoutSuspensionContacts) {
+  Scene scene = scene_with("di_felice", "exponential");
+  scene.integrator.local_steps = true;
+  scene.integrator.retire_below = true;
+  const double hw = scene.cylinder.half_width();
+  const auto grains = crowd(-hw + 40e-6, hw - 40e-6, 0.25, 0.262);
+  std::int64_t engaged[2] = {0, 0};
+  for (bool contacts : {true, false}) {
+    scene.forces.suspension_contacts = contacts;
+    Engine engine(scene, sample_of(grains));
+    while (engine.time() < 1.0) {
+      engine.step(1.0);
+      const std::string broken = engine.local_violation();
+      ASSERT_EQ(broken, "") << contacts << " at t = " << engine.time() << " s";
+    }
+    engaged[contacts] = engine.stats().engaged;
+  }
+  EXPECT_LT(engaged[0] * 10, engaged[1]) << engaged[0] << " " << engaged[1];
 }
 
 // Grains that fall below every instrument retire onto the coarse bed. Those that stay above are

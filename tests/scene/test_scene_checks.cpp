@@ -136,3 +136,24 @@ TEST(SceneChecks, UnknownKeysInAnyTableGetTheNearestName) {
 
 }  // namespace
 }  // namespace sedem
+
+namespace sedem {
+namespace {
+
+// Grains that pass each other must not build a contact bed: the option needs retirement.
+TEST(SceneChecks, SuspensionContactsOffNeedsRetirement) {
+  const std::string off = "[forces]\nsuspension_contacts = false\n";
+  EXPECT_EQ(test::scene_error(off, {}), "");
+  const std::string e = test::scene_error(
+      off +
+          "[instruments.hydrometer]\nenabled = false\n[instruments.buoyancy]\nenabled = "
+          "false\n[instruments.pipette]\nenabled = false\n",
+      {});
+  EXPECT_NE(e.find("bad.toml:2: forces.suspension_contacts = false"), std::string::npos) << e;
+  EXPECT_NE(e.find("needs grains to retire onto the coarse bed"), std::string::npos) << e;
+  EXPECT_NE(test::scene_error(off, {"integrator.local_steps=false"}).find("local_steps"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace sedem
