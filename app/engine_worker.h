@@ -24,6 +24,11 @@ namespace sedem::app {
 class EngineWorker : public QObject {
   Q_OBJECT
  public:
+  // Two snapshots waiting on each side keep the engine busy while files are written; above a
+  // quarter of a million particles (16 MB a snapshot) one each: a million-particle run then
+  // holds at most three snapshots instead of five (64 bytes a particle each).
+  static int capacity_for(std::size_t particles) { return particles > 250000 ? 1 : 2; }
+
   EngineWorker(Engine& engine, std::vector<double> schedule, int capacity = 2);
 
   void stop() { stop_.store(true); }

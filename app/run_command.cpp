@@ -261,7 +261,8 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   };
 
   auto& observers = run_observers.all;
-  EngineWorker worker(engine, schedule_of(observers, scene.end_time, engine.time()));
+  EngineWorker worker(engine, schedule_of(observers, scene.end_time, engine.time()),
+                      EngineWorker::capacity_for(engine.particles().size()));
   // Periodic checkpoints, on the engine's thread while the engine rests.
   worker.checkpoint_every(scene.checkpoint_interval, [&](const auto& write_engine) {
     write_checkpoint(out, write_engine, checkpoint_record());

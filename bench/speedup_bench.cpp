@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
     overrides.insert(overrides.end(), v.sets.begin(), v.sets.end());
     const Scene scene = load_scene(scene_file, overrides);
     const Sample sample = build_sample(scene);
-    SimulationRun run = simulate(scene, sample);
+    SimulationRun run = simulate(scene, sample, true);
     if (v.name == "reference") reference = run;
     const double speedup = reference.wall_seconds / std::max(run.wall_seconds, 1e-9);
     const double moved = position_gap(run.last, reference.last, sample.particles);

@@ -97,6 +97,7 @@ class Engine {
   void note_ahead(std::uint32_t id, double t, const Box& before, double t0_before);
   bool resync_clear_of(std::uint32_t id, const Box& reach);
   bool passes(std::uint32_t j) const;
+  void hold_coasting_box(std::uint32_t id, const Box& box);
   FreeFlight flight_of(std::uint32_t id, const FreeFlight::Point& p) const;
   FreeFlight::Point coasting_at(std::uint32_t id, double t) const;
   void engage(std::uint32_t id, const FreeFlight::Point& p, bool frozen);

@@ -25,12 +25,15 @@ InstrumentObserver::InstrumentObserver(const Scene& scene, const Sample& sample)
 }
 
 void InstrumentObserver::observe(const Snapshot& snapshot) {
-  if (contains_time(reading_times_, snapshot.time))
-    panel_.observe(snapshot.time, snapshot.particles);
-  if (contains_time(profile_times_, snapshot.time))
-    profiles_.push_back(largest_diameter_profile(
-        snapshot.particles, scene_.cylinder, scene_.fluid, particle_density_,
-        std::size_t(scene_.instruments.layers), snapshot.time));
+  observe(snapshot.time, snapshot.particles);
+}
+
+void InstrumentObserver::observe(double time, const Particles& particles) {
+  if (contains_time(reading_times_, time)) panel_.observe(time, particles);
+  if (contains_time(profile_times_, time))
+    profiles_.push_back(largest_diameter_profile(particles, scene_.cylinder, scene_.fluid,
+                                                 particle_density_,
+                                                 std::size_t(scene_.instruments.layers), time));
 }
 
 TestResults InstrumentObserver::results() const {

@@ -27,6 +27,7 @@ class InstrumentObserver : public Observer {
   std::string name() const override { return "instruments"; }
   std::vector<double> wanted_times() const override { return times_; }
   void observe(const Snapshot& snapshot) override;
+  void observe(double time, const Particles& particles);
   bool accumulates() const override { return true; }
 
   // The readings taken so far against the reference at the same times.

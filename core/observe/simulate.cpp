@@ -5,7 +5,7 @@
 
 namespace sedem {
 
-SimulationRun simulate(const Scene& scene, Sample sample) {
+SimulationRun simulate(const Scene& scene, Sample sample, bool keep_last) {
   const auto start = std::chrono::steady_clock::now();
   InstrumentObserver instruments(scene, sample);
   SimulationRun run;
@@ -13,12 +13,12 @@ SimulationRun simulate(const Scene& scene, Sample sample) {
   Engine engine(scene, std::move(sample));
   for (double t : instruments.wanted_times()) {
     engine.advance_to(t);
-    instruments.observe(engine.snapshot());
+    instruments.observe(engine.time(), engine.particles());
     run.peak_engine_bytes = std::max(run.peak_engine_bytes, engine.bytes());
   }
   run.results = instruments.results();
   run.stats = engine.stats();
-  run.last = engine.particles();
+  if (keep_last) run.last = engine.particles();
   run.simulated_seconds = engine.time();
   run.peak_engine_bytes = std::max(run.peak_engine_bytes, engine.bytes());
   run.threads = engine.threads();
