@@ -151,9 +151,25 @@ ReferenceSolution ForwardModel::reference(const Eigen::VectorXd& x) const {
   const double packing = scene_.instruments.reference_bed_packing;
   if (local_voidage_)
     return ReferenceSolution::from_fronts(
-        local_voidage_fronts(classes, rho_p, scene_.fluid, scene_.forces.drag), scene_.cylinder,
-        rho_p, packing);
+        held_.order.empty() ? local_voidage_fronts(classes, rho_p, scene_.fluid, scene_.forces.drag)
+                            : fronts_with_held_speeds(classes, held_),
+        scene_.cylinder, rho_p, packing);
   return ReferenceSolution(classes, scene_.cylinder, rho_p, packing);
+}
+
+void ForwardModel::hold_speeds_at(const Eigen::VectorXd& x) {
+  if (!local_voidage_) return;
+  held_ = HeldFronts{};
+  std::vector<SettlingClass> classes;
+  const double c0 = suspension_.initial_concentration;
+  for (std::size_t k = 0; k < class_diameter_.size(); ++k) {
+    const double share = x(Eigen::Index(k / std::size_t(subclasses_))) / subclasses_;
+    classes.push_back({class_diameter_[k], c0 * share, class_velocity_[k]});
+  }
+  HeldFronts held;
+  local_voidage_fronts(classes, suspension_.particle_density, scene_.fluid, scene_.forces.drag,
+                       &held);
+  held_ = std::move(held);
 }
 
 double ForwardModel::read(const Eigen::VectorXd& x, double time) const {

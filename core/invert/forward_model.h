@@ -66,9 +66,14 @@ class ForwardModel {
   const Grid& grid() const { return grid_; }
   const std::vector<double>& times() const { return times_; }
   const Suspension& suspension() const { return suspension_; }
-  // True when the readings are affine in x: the sphere's and the pipette's, unless the
-  // settling speeds depend on the voidage, i.e. on x itself (local_voidage).
-  bool affine() const { return test_ != Test::hydrometer && !local_voidage_; }
+  // True when the readings are affine in x: the sphere's and the pipette's (with the speeds
+  // held, below, when they depend on the voidage).
+  bool affine() const { return test_ != Test::hydrometer; }
+  // The settling speeds depend on the voidage, i.e. on x itself (local_voidage): an inversion
+  // holds them at its current x (hold_speeds_at), which makes the readings of other x those of
+  // the same fronts with other masses, and takes them anew at each of its steps.
+  bool speeds_depend_on_x() const { return local_voidage_; }
+  void hold_speeds_at(const Eigen::VectorXd& x);
 
   Eigen::VectorXd readings(const Eigen::VectorXd& x) const;
   // d readings / d x at x: exact columns for the affine tests, one-sided differences of
@@ -109,9 +114,10 @@ class ForwardModel {
   HydrometerGeometry hydrometer_;
   BuoyancySphere sphere_;
   Pipette pipette_;
-  double clear_reading_ = 0;                             // 152H in the clear liquid, g/L
-  double hindrance_ = 1;                                 // on every terminal velocity
-  bool local_voidage_ = false;                           // speeds set by the voidage
+  double clear_reading_ = 0;    // 152H in the clear liquid, g/L
+  double hindrance_ = 1;        // on every terminal velocity
+  bool local_voidage_ = false;  // speeds set by the voidage
+  HeldFronts held_;             // local_voidage: the speeds held (none: from each x's own voidage)
   std::vector<double> class_diameter_, class_velocity_;  // bins x subclasses
 };
 

@@ -247,8 +247,8 @@ InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<M
     out.resolved_max = *std::max_element(out.reading_diameter.begin(), out.reading_diameter.end());
     out.resolved_min = *std::min_element(out.reading_diameter.begin(), out.reading_diameter.end());
   }
-  const ForwardModel model(scene, test, reading_grid(out.reading_diameter, options.refine), times,
-                           options.subclasses);
+  ForwardModel model(scene, test, reading_grid(out.reading_diameter, options.refine), times,
+                     options.subclasses);
   const Eigen::Index n = Eigen::Index(model.grid().bins());
   const std::vector<double> widths = bin_widths(model.grid());
 
@@ -256,14 +256,19 @@ InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<M
   Eigen::VectorXd x = Eigen::VectorXd::Constant(n, 1.0 / double(n));
   Eigen::MatrixXd j;
   Problem::Choice choice;
+  // Speeds that depend on the voidage are held at each step's x (a fixed point in them): the
+  // data then pull the curve only through where the fronts are, not through how the total
+  // mass hinders them, which the readings resolve no better than their noise.
   for (out.iterations = 1; out.iterations <= options.max_iterations; ++out.iterations) {
+    model.hold_speeds_at(x);
     j = model.jacobian(x);
     const Problem problem(j, model.readings(x), x, out.sigma, widths);
     choice = problem.choose(measured, options.tau);
     const double change = (choice.x - x).cwiseAbs().maxCoeff();
     x = choice.x;
-    if (model.affine() || change < 1e-5) break;
+    if ((model.affine() && !model.speeds_depend_on_x()) || change < 1e-5) break;
   }
+  model.hold_speeds_at(x);
   out.iterations = std::min(out.iterations, options.max_iterations);
   const Eigen::VectorXd fitted = model.readings(x);
   out.fitted.assign(fitted.data(), fitted.data() + fitted.size());
@@ -285,7 +290,7 @@ InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<M
   out.coverage = options.coverage;
   out.replicas = std::max(0, options.bootstrap);
   if (out.replicas > 0) {
-    if (!model.affine()) j = model.jacobian(x);
+    if (!model.affine() || model.speeds_depend_on_x()) j = model.jacobian(x);
     const Problem problem(j, fitted, x, out.sigma, widths);
     std::mt19937_64 rng(options.seed);
     std::uniform_real_distribution<double> noise(-0.5 * resolution, 0.5 * resolution);

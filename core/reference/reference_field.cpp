@@ -16,6 +16,7 @@ namespace {
 // v' < s for every finer class unless two classes settle at nearly the same speed, where the
 // ratio is held to [1/2, 2]: the voidage moves their speeds by well under their spacing.
 double scale_through_front(double s, double v, double v_above) {
+  if (v_above == v) return 1.0;  // the voidage did not change its speed
   return s - v_above > 0 ? std::clamp((s - v) / (s - v_above), 0.5, 2.0) : 2.0;
 }
 
@@ -66,7 +67,7 @@ std::vector<SettlingClass> settling_classes(const std::vector<SizeClass>& classe
 
 std::vector<SettlingFront> voidage_fronts(
     const std::vector<SettlingClass>& classes, double particle_density,
-    const std::function<double(std::size_t, double)>& velocity) {
+    const std::function<double(std::size_t, double)>& velocity, HeldFronts* held) {
   std::vector<std::size_t> order(classes.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -85,6 +86,11 @@ std::vector<SettlingFront> voidage_fronts(
   };
   speeds(order.size(), solids, v);
   std::vector<SettlingFront> fronts(order.size());
+  if (held) {
+    held->order = order;
+    held->speed.assign(order.size(), 0.0);
+    held->scale.assign(order.size(), {});
+  }
   double previous_speed = std::numeric_limits<double>::infinity();
   for (std::size_t k = order.size(); k-- > 0;) {
     // Class k ends here; a front cannot overtake the one below it (equal speeds: a front
@@ -103,8 +109,14 @@ std::vector<SettlingFront> voidage_fronts(
       if (converged) break;
     }
     speeds(k, above, v_above);
+    if (held) {
+      held->speed[k] = s;
+      held->scale[k].resize(k);
+    }
     for (std::size_t m = 0; m < k; ++m) {
-      c[m] *= scale_through_front(s, v[m], v_above[m]);
+      const double scale = scale_through_front(s, v[m], v_above[m]);
+      if (held) held->scale[k][m] = scale;
+      c[m] *= scale;
       v[m] = v_above[m];
     }
     fronts[k] = {classes[order[k]].diameter, s, solids - above};
@@ -113,13 +125,39 @@ std::vector<SettlingFront> voidage_fronts(
   return fronts;
 }
 
+std::vector<SettlingFront> fronts_with_held_speeds(const std::vector<SettlingClass>& classes,
+                                                   const HeldFronts& held) {
+  if (held.order.size() != classes.size())
+    throw std::invalid_argument("reference solution: held fronts of another set of classes");
+  const std::size_t n = classes.size();
+  std::vector<double> c(n);
+  for (std::size_t k = 0; k < n; ++k) c[k] = classes[held.order[k]].concentration;
+  std::vector<SettlingFront> fronts(n);
+  for (std::size_t k = n; k-- > 0;) {
+    double jump = c[k];
+    for (std::size_t m = 0; m < k; ++m) {
+      jump += c[m] * (1.0 - held.scale[k][m]);
+      c[m] *= held.scale[k][m];
+    }
+    fronts[k] = {classes[held.order[k]].diameter, held.speed[k], jump};
+  }
+  return fronts;
+}
+
 std::vector<SettlingFront> local_voidage_fronts(const std::vector<SettlingClass>& classes,
                                                 double particle_density, const Fluid& fluid,
-                                                const std::string& drag) {
+                                                const std::string& drag, HeldFronts* held) {
   double solids = 0;
   for (const auto& c : classes) solids += c.concentration;
   const double initial_voidage = 1.0 - solids / particle_density;
-  if (drag != "di_felice" || !(solids > 0)) return fronts_of(classes);
+  if (drag != "di_felice" || !(solids > 0)) {
+    // No voidage in the speeds: each class's front at its own speed, nothing rescaled.
+    if (held)
+      voidage_fronts(
+          classes, particle_density, [&](std::size_t n, double) { return classes[n].velocity; },
+          held);
+    return fronts_of(classes);
+  }
   std::vector<double> exponent(classes.size());
   for (std::size_t n = 0; n < classes.size(); ++n)
     exponent[n] = std::log(drag::di_felice_terminal_velocity(classes[n].diameter, particle_density,
@@ -127,9 +165,12 @@ std::vector<SettlingFront> local_voidage_fronts(const std::vector<SettlingClass>
                            drag::di_felice_terminal_velocity(classes[n].diameter, particle_density,
                                                              fluid, 1.0)) /
                   std::log(initial_voidage);
-  return voidage_fronts(classes, particle_density, [&](std::size_t n, double voidage) {
-    return classes[n].velocity * std::exp(exponent[n] * std::log(voidage));
-  });
+  return voidage_fronts(
+      classes, particle_density,
+      [&](std::size_t n, double voidage) {
+        return classes[n].velocity * std::exp(exponent[n] * std::log(voidage));
+      },
+      held);
 }
 
 ReferenceSolution::ReferenceSolution(const std::vector<SettlingClass>& classes,

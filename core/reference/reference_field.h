@@ -66,16 +66,30 @@ struct SettlingFront {
 // so it is slightly denser above. Solved from the deepest region (the initial suspension)
 // upwards, a fixed point in the voidage per front. `velocity(n, voidage)` is class n's
 // terminal velocity at that voidage; classes are given in any order.
+//
+// With `held`, it also records what the solution did with the speeds: the order of the classes,
+// each front's speed and the factor by which each finer class's concentration changed across it.
+// fronts_with_held_speeds then gives the fronts of other concentrations with those speeds held,
+// which are linear in the concentrations: what an inversion linearises (readings affine in the
+// class masses, the voidage taken anew between two of its steps).
+struct HeldFronts {
+  std::vector<std::size_t> order;          // the classes, slowest first
+  std::vector<double> speed;               // of the front of order[k]
+  std::vector<std::vector<double>> scale;  // scale[k][m], m < k: c_m above / below front k
+};
 std::vector<SettlingFront> voidage_fronts(
     const std::vector<SettlingClass>& classes, double particle_density,
-    const std::function<double(std::size_t, double)>& velocity);
+    const std::function<double(std::size_t, double)>& velocity, HeldFronts* held = nullptr);
+std::vector<SettlingFront> fronts_with_held_speeds(const std::vector<SettlingClass>& classes,
+                                                   const HeldFronts& held);
 
 // voidage_fronts for the scene's drag law: Di Felice's terminal velocity at voidage eps is
 // u_n(1) eps^(a_n), a_n fitted exactly at the initial voidage (chi hardly changes over the few
 // per cent of solids); Stokes drag does not see the voidage, so its fronts are the classes'.
 std::vector<SettlingFront> local_voidage_fronts(const std::vector<SettlingClass>& classes,
                                                 double particle_density, const Fluid& fluid,
-                                                const std::string& drag);
+                                                const std::string& drag,
+                                                HeldFronts* held = nullptr);
 
 // The dilute continuum (docs/instruments.md): from a uniform start every grain of class n
 // moves down by u_n t, so the class is gone above its falling upper front at depth u_n t,

@@ -237,6 +237,31 @@ TEST(LocalVoidage, TwoSizesObeyTheJumpConditions) {
                    ca_above);
 }
 
+// With the speeds held, the fronts of the same concentrations are the solution's, and those of
+// other concentrations are linear in them (what the inversion's linearisation needs).
+TEST(LocalVoidage, HeldSpeedsReproduceTheSolutionAndAreLinear) {
+  const std::vector<SettlingClass> three{{20e-6, 15, kU20}, {10e-6, 10, kU10}, {15e-6, 20, 1.8e-4}};
+  auto velocity = [&](std::size_t n, double eps) { return three[n].velocity * std::pow(eps, 2.7); };
+  HeldFronts held;
+  const auto solved = voidage_fronts(three, 2500, velocity, &held);
+  const auto again = fronts_with_held_speeds(three, held);
+  ASSERT_EQ(again.size(), solved.size());
+  for (std::size_t k = 0; k < solved.size(); ++k) {
+    EXPECT_DOUBLE_EQ(again[k].speed, solved[k].speed);
+    EXPECT_NEAR(again[k].jump, solved[k].jump, 1e-12);
+  }
+  auto a = three, b = three, sum = three;
+  for (std::size_t n = 0; n < 3; ++n) {
+    a[n].concentration = n == 0 ? 1.0 : 0.0;
+    b[n].concentration = n == 2 ? 3.0 : 0.5;
+    sum[n].concentration = 2 * a[n].concentration + b[n].concentration;
+  }
+  const auto fa = fronts_with_held_speeds(a, held), fb = fronts_with_held_speeds(b, held),
+             fs = fronts_with_held_speeds(sum, held);
+  for (std::size_t k = 0; k < fs.size(); ++k)
+    EXPECT_NEAR(fs[k].jump, 2 * fa[k].jump + fb[k].jump, 1e-12);
+}
+
 // The scene's Di Felice drag: every front falls slower than the free one, the coarsest at the
 // Di Felice terminal velocity in the initial suspension (eps^(1 - chi) makes that about
 // eps^2.5 at its Re of 0.3); with Stokes drag (no voidage in it) the two are the same.
