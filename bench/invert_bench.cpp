@@ -126,9 +126,9 @@ int main(int argc, char** argv) {
   fs::create_directories(out);
   std::ofstream csv(fs::path(out) / "invert_bench.csv");
   csv << "sample,test,source,readings,standard_max_pp,inverted_max_pp,goal_met,lambda,chi2,"
-         "chi2_target,coverage,invert_s\n";
-  std::printf("%-8s %-10s %-9s %3s %9s %9s %5s %9s %8s %8s %8s\n", "sample", "test", "source", "n",
-              "std_pp", "inv_pp", "goal", "lambda", "chi2", "cover", "inv_s");
+         "chi2_target,coverage,band_width_pp,invert_s\n";
+  std::printf("%-8s %-10s %-9s %3s %9s %9s %5s %9s %8s %8s %8s %8s\n", "sample", "test", "source",
+              "n", "std_pp", "inv_pp", "goal", "lambda", "chi2", "cover", "width", "inv_s");
   for (const auto& file : scenes) {
     std::vector<std::string> overrides = sets;
     if (source == "dem") overrides.push_back("sample.simulated_count=" + std::to_string(count));
@@ -178,7 +178,7 @@ int main(int argc, char** argv) {
       // Goal: at least halve an error above 2 pp; never worse by more than 0.5 pp.
       const bool goal = std_err > 2.0 ? inv_err <= 0.5 * std_err : inv_err <= std_err + 0.5;
       // Coverage: noisy copies (an error uniform over one resolution step before rounding).
-      double cover = std::nan("");
+      double cover = std::nan(""), width = std::nan("");
       if (copies > 0) {
         std::mt19937_64 rng(7);
         const double res = invert::default_resolution(test);
@@ -188,6 +188,7 @@ int main(int argc, char** argv) {
         o.refine = refine;
         o.tau = tau;
         int inside = 0, total = 0;
+        double width_sum = 0;
         for (int k = 0; k < copies; ++k) {
           std::vector<double> shift;
           for (std::size_t i = 0; i < c.raw.size(); ++i) shift.push_back(noise(rng));
@@ -199,17 +200,20 @@ int main(int argc, char** argv) {
             if (truth <= 0.5 || truth >= 99.5) continue;
             ++total;
             inside += truth >= noisy.lower_at(d) && truth <= noisy.upper_at(d);
+            width_sum += noisy.upper_at(d) - noisy.lower_at(d);
           }
         }
         cover = total ? double(inside) / total : std::nan("");
+        width = total ? width_sum / total : std::nan("");
       }
-      std::printf("%-8s %-10s %-9s %3zu %9.2f %9.2f %5s %9.3g %8.2f %8.3f %8.2f\n",
+      std::printf("%-8s %-10s %-9s %3zu %9.2f %9.2f %5s %9.3g %8.2f %8.3f %8.2f %8.2f\n",
                   scene.name.c_str(), name.c_str(), source.c_str(), data.size(), std_err, inv_err,
-                  goal ? "yes" : "no", curve.lambda, curve.chi2, cover, seconds);
+                  goal ? "yes" : "no", curve.lambda, curve.chi2, cover, width, seconds);
       std::fflush(stdout);
       csv << scene.name << ',' << name << ',' << source << ',' << data.size() << ',' << std_err
           << ',' << inv_err << ',' << (goal ? "yes" : "no") << ',' << curve.lambda << ','
-          << curve.chi2 << ',' << curve.chi2_target << ',' << cover << ',' << seconds << '\n';
+          << curve.chi2 << ',' << curve.chi2_target << ',' << cover << ',' << width << ','
+          << seconds << '\n';
     }
   }
   return 0;

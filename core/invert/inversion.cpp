@@ -225,6 +225,42 @@ void validate_measurements(const Scene& scene, Test test, const std::vector<Meas
   }
 }
 
+namespace {
+
+struct Fit {
+  Eigen::VectorXd x;
+  Problem::Choice choice;
+  Eigen::MatrixXd jacobian;  // at x, the speeds held there
+  int iterations = 0;
+};
+
+// Gauss-Newton from an even spread (one step for the affine tests), lambda by the discrepancy
+// principle at each step. Speeds that depend on the voidage are held at each step's x (a fixed
+// point in them): the data then pull the curve only through where the fronts are, not through
+// how the total mass hinders them, which the readings resolve no better than their noise.
+Fit fit_readings(ForwardModel& model, const Eigen::VectorXd& measured, double sigma,
+                 const InversionOptions& options) {
+  const Eigen::Index n = Eigen::Index(model.grid().bins());
+  const std::vector<double> widths = bin_widths(model.grid());
+  Fit fit;
+  fit.x = Eigen::VectorXd::Constant(n, 1.0 / double(n));
+  for (fit.iterations = 1; fit.iterations <= options.max_iterations; ++fit.iterations) {
+    model.hold_speeds_at(fit.x);
+    fit.jacobian = model.jacobian(fit.x);
+    const Problem problem(fit.jacobian, model.readings(fit.x), fit.x, sigma, widths);
+    fit.choice = problem.choose(measured, options.tau);
+    const double change = (fit.choice.x - fit.x).cwiseAbs().maxCoeff();
+    fit.x = fit.choice.x;
+    if ((model.affine() && !model.speeds_depend_on_x()) || change < 1e-5) break;
+  }
+  fit.iterations = std::min(fit.iterations, options.max_iterations);
+  model.hold_speeds_at(fit.x);
+  if (!model.affine() || model.speeds_depend_on_x()) fit.jacobian = model.jacobian(fit.x);
+  return fit;
+}
+
+}  // namespace
+
 InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<Measurement>& data,
                               const InversionOptions& options) {
   validate_measurements(scene, test, data, options);
@@ -249,27 +285,12 @@ InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<M
   }
   ForwardModel model(scene, test, reading_grid(out.reading_diameter, options.refine), times,
                      options.subclasses);
-  const Eigen::Index n = Eigen::Index(model.grid().bins());
   const std::vector<double> widths = bin_widths(model.grid());
-
-  // Gauss-Newton from an even spread (one step for the affine tests).
-  Eigen::VectorXd x = Eigen::VectorXd::Constant(n, 1.0 / double(n));
-  Eigen::MatrixXd j;
-  Problem::Choice choice;
-  // Speeds that depend on the voidage are held at each step's x (a fixed point in them): the
-  // data then pull the curve only through where the fronts are, not through how the total
-  // mass hinders them, which the readings resolve no better than their noise.
-  for (out.iterations = 1; out.iterations <= options.max_iterations; ++out.iterations) {
-    model.hold_speeds_at(x);
-    j = model.jacobian(x);
-    const Problem problem(j, model.readings(x), x, out.sigma, widths);
-    choice = problem.choose(measured, options.tau);
-    const double change = (choice.x - x).cwiseAbs().maxCoeff();
-    x = choice.x;
-    if ((model.affine() && !model.speeds_depend_on_x()) || change < 1e-5) break;
-  }
-  model.hold_speeds_at(x);
-  out.iterations = std::min(out.iterations, options.max_iterations);
+  Fit fit = fit_readings(model, measured, out.sigma, options);
+  const Eigen::VectorXd& x = fit.x;
+  const Problem::Choice& choice = fit.choice;
+  Eigen::MatrixXd j = fit.jacobian;
+  out.iterations = fit.iterations;
   const Eigen::VectorXd fitted = model.readings(x);
   out.fitted.assign(fitted.data(), fitted.data() + fitted.size());
   out.chi2 = ((fitted - measured) / out.sigma).squaredNorm();
@@ -290,7 +311,6 @@ InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<M
   out.coverage = options.coverage;
   out.replicas = std::max(0, options.bootstrap);
   if (out.replicas > 0) {
-    if (!model.affine() || model.speeds_depend_on_x()) j = model.jacobian(x);
     const Problem problem(j, fitted, x, out.sigma, widths);
     std::mt19937_64 rng(options.seed);
     std::uniform_real_distribution<double> noise(-0.5 * resolution, 0.5 * resolution);
