@@ -191,6 +191,37 @@ TEST(LocalSteps, KeepTheirPromiseWithoutSuspensionContacts) {
   EXPECT_LT(engaged[0] * 10, engaged[1]) << engaged[0] << " " << engaged[1];
 }
 
+// Without suspension contacts a run resumes bit for bit too (free grains hold no box, so the
+// checkpoint holds the members' and the walls' only), and grains still keep off the walls.
+TEST(LocalSteps, WithoutSuspensionContactsResumesBitForBit) {
+  Scene scene = scene_with("di_felice", "exponential");
+  scene.integrator.local_steps = true;
+  scene.integrator.retire_below = true;
+  scene.forces.suspension_contacts = false;
+  const double hw = scene.cylinder.half_width();
+  const auto grains = crowd(-hw + 40e-6, hw - 40e-6, 0.2, 0.3);
+  const std::string checkpoint =
+      (std::filesystem::temp_directory_path() / "sedem_passing_test.ckpt").string();
+  Engine first(scene, sample_of(grains));
+  for (int k = 1; k <= 20; ++k) {
+    first.advance_to(k);
+    ASSERT_EQ(first.local_violation(), "") << k;
+    if (k == 10) first.save_checkpoint(checkpoint);
+  }
+  Engine resumed(scene, sample_of(grains));
+  resumed.load_checkpoint(checkpoint);
+  for (int k = 11; k <= 20; ++k) resumed.advance_to(k);
+  const Particles& a = first.particles();
+  const Particles& c = resumed.particles();
+  for (std::size_t i = 0; i < grains.size(); ++i) {
+    EXPECT_EQ(c.x[i], a.x[i]) << i;
+    EXPECT_EQ(c.y[i], a.y[i]) << i;
+    EXPECT_LE(std::abs(a.x[i]), hw - 0.5 * a.diameter[i] * 0.7) << i;
+  }
+  EXPECT_GT(first.stats().retired, 0u);  // 20 s: the coarse grains crossed the line
+  std::filesystem::remove(checkpoint);
+}
+
 // Grains that fall below every instrument retire onto the coarse bed. Those that stay above are
 // where they would be without retirement (Stokes drag: a free grain's path does not depend on
 // its windows), the retired ones lie stacked on the bottom, and a checkpoint taken with
