@@ -24,6 +24,7 @@ constexpr std::size_t kParallelFrom = std::size_t(1) << 15;
 void ContactProjection::configure(const ForceModel& model, int threads, int sweeps,
                                   std::size_t grains) {
   model_ = model;
+  friction_ = model.contact && model.friction && model.mu > 0;
   grains_ = grains;
   threads_ = std::max(1, threads);
   sweeps_ = std::max(1, sweeps);
@@ -37,12 +38,16 @@ std::size_t ContactProjection::bytes() const {
   for (const auto* v : {&particle_, &count_, &first_, &slot_of_, &held_list_})
     b += v->capacity() * 4;
   for (const auto* v : {&mobility_, &response_, &moved_x_, &moved_y_}) b += v->capacity() * 8;
+  for (const auto* v : {&spin_mobility_, &turned_, &start_x_, &start_y_}) b += v->capacity() * 8;
   b += held_.capacity() + kept_.capacity() * sizeof(PairHistory::Entry);
-  return b + warm_.bytes();
+  b += kept_tangential_.capacity() * sizeof(PairHistory::Entry);
+  return b + warm_.bytes() + warm_tangential_.bytes();
 }
 
-void ContactProjection::save(std::ostream& out) const {
-  const auto entries = warm_.sorted_entries();
+namespace {
+
+void save_history(std::ostream& out, const PairHistory& history) {
+  const auto entries = history.sorted_entries();
   const std::uint64_t count = entries.size();
   out.write(reinterpret_cast<const char*>(&count), 8);
   for (const auto& e : entries) {
@@ -51,7 +56,7 @@ void ContactProjection::save(std::ostream& out) const {
   }
 }
 
-void ContactProjection::load(std::istream& in) {
+void load_history(std::istream& in, PairHistory& history) {
   std::uint64_t count = 0;
   in.read(reinterpret_cast<char*>(&count), 8);
   std::vector<PairHistory::Entry> entries(count);
@@ -59,7 +64,19 @@ void ContactProjection::load(std::istream& in) {
     in.read(reinterpret_cast<char*>(&e.key), 8);
     in.read(reinterpret_cast<char*>(&e.spring), 8);
   }
-  warm_.assign(&entries, 1);
+  history.assign(&entries, 1);
+}
+
+}  // namespace
+
+void ContactProjection::save(std::ostream& out) const {
+  save_history(out, warm_);
+  if (friction_) save_history(out, warm_tangential_);
+}
+
+void ContactProjection::load(std::istream& in) {
+  load_history(in, warm_);
+  if (friction_) load_history(in, warm_tangential_);
   held_.clear();  // rebuilt from warm_ at the next run
   held_list_.clear();
   particle_.clear();
@@ -116,9 +133,12 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
         const double dist2 = dx * dx + dy * dy;
         const double rj = 0.5 * d[j], reach = ri + rj, rmin = std::min(ri, rj);
         const double near = reach + kSkin * rmin;
-        const double force =
-            held_i && held[origin[j]] ? warm_.find(PairHistory::key(oi, origin[j])) : 0.0;
-        if (dist2 < near * near || force > 0) found.push_back({i, j, 0, 0, force, 0, 0, false});
+        const bool was_held = held_i && held[origin[j]];
+        const double force = was_held ? warm_.find(PairHistory::key(oi, origin[j])) : 0.0;
+        const double tangential =
+            was_held && friction_ ? warm_tangential_.find(PairHistory::key(oi, origin[j])) : 0.0;
+        if (dist2 < near * near || force > 0)
+          found.push_back({i, j, 0, 0, force, 0, 0, false, tangential, -tangential / model_.kt, 0});
       }
     }
   }
@@ -175,6 +195,35 @@ void ContactProjection::index_participants(const EngineState& s, const std::vect
     mobility_[k] = m.mobility;
     response_[k] = m.response;
   }
+  if (!friction_) return;
+  spin_mobility_.resize(slots);
+  turned_.resize(slots);
+  for (std::size_t k = 0; k < slots; ++k) {
+    const std::uint32_t p = particle_[k];
+    const double d = s.diameter[p], inertia = 0.1 * model_.mass(d) * d * d;
+    spin_mobility_[k] = s.frozen[p] ? 0.0 : 0.5 * dt * dt / inertia;
+    turned_[k] = s.frozen[p] ? 0.0 : s.omega[p] * dt;
+  }
+}
+
+double ContactProjection::friction_change(Constraint& c, const EngineState& s, double dx, double dy,
+                                          double dist, double share_a, double share_b) {
+  const std::size_t ka = c.slot_a, kb = c.slot_b;
+  const double ra = 0.5 * s.diameter[c.a], rb = 0.5 * s.diameter[c.b];
+  const double tx = -dy / dist, ty = dx / dist;
+  const double slip = (s.x[c.a] - start_x_[ka] - (s.x[c.b] - start_x_[kb])) * tx +
+                      (s.y[c.a] - start_y_[ka] - (s.y[c.b] - start_y_[kb])) * ty +
+                      ra * turned_[ka] + rb * turned_[kb];
+  const double g = c.spring + slip, compliance = 1.0 / model_.kt;
+  const double spin = ra * ra * spin_mobility_[ka] * std::max<std::uint32_t>(count_[ka], 1) +
+                      rb * rb * spin_mobility_[kb] * std::max<std::uint32_t>(count_[kb], 1);
+  const double limit = model_.mu * c.lambda;
+  const double wanted =
+      c.lambda_t + (-g - c.lambda_t * compliance) / (share_a + share_b + spin + compliance);
+  const double next = std::clamp(wanted, -limit, limit);
+  const double change = next - c.lambda_t;
+  c.lambda_t = next;
+  return change;
 }
 
 double ContactProjection::sweep(EngineState& s, Mode mode) {
@@ -200,7 +249,7 @@ double ContactProjection::sweep(EngineState& s, Mode mode) {
       const std::uint32_t a = c.a;
       const double ra = 0.5 * d[a];
       const double share_a = mobility_[c.slot_a] * std::max<std::uint32_t>(count_[c.slot_a], 1);
-      c.mx = c.my = 0;
+      c.mx = c.my = c.mt = 0;
       if (c.b >= kSide) {
         double overlap = ra - y[a], direction = 0;
         if (c.b == kSide) {
@@ -227,11 +276,18 @@ double ContactProjection::sweep(EngineState& s, Mode mode) {
       const double u = change(c.lambda, reach - dist, share_a + share_b + compliance) / dist;
       c.mx = -u * dx;
       c.my = -u * dy;
+      if (friction_) {
+        const double ft =
+            solving ? friction_change(c, s, dx, dy, dist, share_a, share_b) : c.lambda_t;
+        c.mt = ft;
+        c.mx -= ft * dy / dist;
+        c.my += ft * dx / dist;
+      }
     }
 #pragma omp for schedule(static)
     for (std::size_t k = 0; k < slots; ++k) {
       const double w = mobility_[k];
-      double dx = 0, dy = 0;
+      double dx = 0, dy = 0, torque = 0;
       std::uint32_t count = 0;
       for (std::uint32_t e = first_[k]; e < first_[k + 1]; ++e) {
         const Incidence in = incidences_[e];
@@ -240,10 +296,12 @@ double ContactProjection::sweep(EngineState& s, Mode mode) {
         const double wk = in.is_b ? -w : w;
         dx += wk * c.mx;
         dy += wk * c.my;
+        torque += c.mt;  // either side turns the same way, by its own radius
       }
       count_[k] = count;
       if (starting) continue;
       const std::uint32_t p = particle_[k];
+      if (friction_) turned_[k] += spin_mobility_[k] * 0.5 * d[p] * torque;
       x[p] += dx;
       y[p] += dy;
       moved_x_[k] += dx;
@@ -262,14 +320,18 @@ void ContactProjection::keep(const EngineState& s) {
     if (!held_[o]) held_list_.push_back(o);
     held_[o] = 1;
   };
+  kept_tangential_.clear();
   for (const Constraint& c : constraints_) {
     if (c.lambda <= 0) continue;
     const std::uint32_t oa = origin[c.a], ob = c.b >= kSide ? c.b : origin[c.b];
     kept_.push_back({PairHistory::key(oa, ob), c.lambda});
+    if (friction_ && c.b < kSide && c.lambda_t != 0)
+      kept_tangential_.push_back({PairHistory::key(oa, ob), c.lambda_t});
     hold(oa);
     if (c.b < kSide) hold(ob);
   }
   warm_.assign(&kept_, 1);
+  if (friction_) warm_tangential_.assign(&kept_tangential_, 1);
 }
 
 void ContactProjection::mark_touching(std::vector<double>& touching) const {
@@ -280,7 +342,7 @@ void ContactProjection::mark_touching(std::vector<double>& touching) const {
 
 ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid,
                                        const ForcePass& pass, const std::vector<double>& drag,
-                                       double dt) {
+                                       double dt, const double* start_x, const double* start_y) {
   const std::size_t n = std::max(grains_, s.size());
   if (held_.size() != n) {  // first run, or after a checkpoint was loaded
     held_.assign(n, 0);
@@ -297,6 +359,15 @@ ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid
   ProjectionFacts facts;
   collect(s, grid, pass);
   index_participants(s, drag, dt);
+  if (friction_) {
+    start_x_.resize(particle_.size());
+    start_y_.resize(particle_.size());
+    for (std::size_t k = 0; k < particle_.size(); ++k) {
+      const std::uint32_t p = particle_[k];
+      start_x_[k] = start_x ? start_x[p] : s.x[p];
+      start_y_[k] = start_y ? start_y[p] : s.y[p];
+    }
+  }
   sweep(s, Mode::start);
   for (std::uint32_t c : count_) facts.touching += c > 0;
   if (facts.touching == 0) {  // every particle stays at its free position
@@ -317,6 +388,10 @@ ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid
       const std::uint32_t p = particle_[k];
       s.vx[p] += response_[k] * moved_x_[k];
       s.vy[p] += response_[k] * moved_y_[k];
+      // The spin becomes the turn over the step divided by it (backward Euler). Taking the
+      // torque as constant over the step (twice that change) made a rolling grain's spin
+      // alternate between nought and twice its rate: the spin has no drag to damp it.
+      if (friction_ && !s.frozen[p]) s.omega[p] = turned_[k] / dt;
     }
     const double hw = model_.half_width;
     // The overlaps left: the worst, and any deeper than a radius into a wall or than the

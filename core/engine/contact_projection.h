@@ -20,7 +20,16 @@
 // constraint reads the positions the sweep started from (Jacobi), and every particle sums its
 // constraints' moves in a fixed order: the result does not depend on the thread count. Pairs
 // pushed into contact from beyond the skin within one step are resolved at the next step.
-// Friction and contact torques are not represented.
+//
+// Friction (forces.friction > 0; walls stay frictionless, as in the reference integrator):
+// each touching pair also gets a tangential force lambda_t, the compliant spring of Eq. 2,
+// lambda_t = -K_T g, with g the tangential displacement of a's contact point against b's
+// accumulated over the contact's life (the last step's -lambda_t / K_T plus this step's
+// relative motion, spins r w dt included), held by the Coulomb limit |lambda_t| <= mu lambda_n
+// of Eq. 4 (sliding when it binds). Its Jacobi update is the normal one's, along t, with the
+// rotations' mobility r^2 dt^2 / (2 I) added (I = m d^2 / 10; no drag on the spin, as in the
+// reference); the spins change by the torques r lambda_t. lambda_t does not depend on which
+// grain is a, and is kept across steps with lambda_n.
 
 #include <cmath>
 #include <cstddef>
@@ -70,8 +79,11 @@ class ContactProjection {
   void configure(const ForceModel& model, int threads, int sweeps, std::size_t grains);
   // `drag[i]`: the linear drag coefficient particle i had over the step (mobility_of gives its
   // mobility). Moves (x, y) from their free values and adds the matching velocity change.
+  // With friction, (start_x, start_y) are the positions at the start of the step (before the
+  // free update), for the tangential motion over it.
   ProjectionFacts run(EngineState& s, const NeighbourGrid& grid, const ForcePass& pass,
-                      const std::vector<double>& drag, double dt);
+                      const std::vector<double>& drag, double dt, const double* start_x = nullptr,
+                      const double* start_y = nullptr);
   // touching[i] > 0 for every particle in contact after the last run, 0 otherwise (size n).
   void mark_touching(std::vector<double>& touching) const;
   // The particles the last run's constraints involved (engine order): the only ones it moved.
@@ -87,8 +99,11 @@ class ContactProjection {
     std::uint32_t a, b;            // engine indices; b = kSide or kFloor for a wall
     std::uint32_t slot_a, slot_b;  // in the participants (slot_b unused for a wall)
     double lambda;
-    double mx, my;  // this sweep: a moves by w_a (mx, my), b by -w_b (mx, my)
-    bool active;    // touching or pushing at this sweep's positions
+    double mx, my;        // this sweep: a moves by w_a (mx, my), b by -w_b (mx, my)
+    bool active;          // touching or pushing at this sweep's positions
+    double lambda_t = 0;  // tangential force on a along t = (-n_y, n_x), n from a to b
+    double spring = 0;    // g carried from the last step: -lambda_t / K_T then
+    double mt = 0;        // this sweep: a turns by wr_a r_a mt, b by wr_b r_b mt
   };
   struct Incidence {
     std::uint32_t constraint;
@@ -101,6 +116,9 @@ class ContactProjection {
   };
   void collect(const EngineState& s, const NeighbourGrid& grid, const ForcePass& pass);
   void index_participants(const EngineState& s, const std::vector<double>& drag, double dt);
+  // The tangential force's change of constraint c in a solving sweep (sets c.mt), friction on.
+  double friction_change(Constraint& c, const EngineState& s, double dx, double dy, double dist,
+                         double share_a, double share_b);
   // One sweep at the current positions; moves the participants. Returns the largest overlap
   // beyond its compliant target / smaller radius among the active constraints.
   double sweep(EngineState& s, Mode mode);
@@ -116,11 +134,18 @@ class ContactProjection {
   // correction summed apart from the position (x - x_free would lose it to round-off).
   std::vector<std::uint32_t> particle_, count_, first_;
   std::vector<double> mobility_, response_, moved_x_, moved_y_;
+  // Friction: per participant, the spin's mobility (turn per unit torque over the step), its
+  // turn so far (spin * dt, then the corrections) and the step's start position.
+  std::vector<double> spin_mobility_, turned_, start_x_, start_y_;
+  bool friction_ = false;
+  double dt_ = 0;
   std::vector<std::uint32_t> slot_of_;  // per particle (engine order): its slot, or kNone
   std::vector<std::uint8_t> held_;      // per particle (sample order): had a force last step
   std::vector<std::uint32_t> held_list_;
   std::vector<PairHistory::Entry> kept_;
   PairHistory warm_;  // forces at the end of the last step; walls as partners kSide, kFloor
+  PairHistory warm_tangential_;  // friction: the pairs' lambda_t at the end of the last step
+  std::vector<PairHistory::Entry> kept_tangential_;
 };
 
 }  // namespace sedem

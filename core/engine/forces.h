@@ -18,7 +18,7 @@ struct ForceModel {
   bool weight = true, buoyancy = true, contact = true, friction = true, lubrication = false;
   bool suspension_contacts = true;  // local steps: coasting grains see each other's boxes
   // false: the force pass only detects contacts; the integrator resolves them as constraints
-  // (contact_projection.h) and friction is not represented.
+  // (contact_projection.h), friction included.
   bool contact_forces = true;
   DragLaw drag = DragLaw::di_felice;
   bool voidage_excludes_self = true;  // Di Felice: see VoidageGrid::excluding

@@ -235,6 +235,12 @@ class ExponentialIntegrator final : public Integrator {
     // Without the force pass a free particle feels only weight, buoyancy and drag.
     const bool pass_forces = needs_force_pass(m);
     if (project) drag_.resize(s.size());
+    // Friction needs the tangential motion over the step: the positions before it.
+    const bool friction = project && m.friction && m.mu > 0;
+    if (friction) {
+      start_x_.assign(s.x.begin(), s.x.end());
+      start_y_.assign(s.y.begin(), s.y.end());
+    }
     // Free update: the forces of the pass (no contact force when contacts are projected), the
     // lubrication's stiffness folded into the damping.
     const ThreadSums sums =
@@ -272,7 +278,9 @@ class ExponentialIntegrator final : public Integrator {
     if (sums.blowup.found && !blowup.found) blowup = sums.blowup;
     facts_ = ProjectionFacts{};
     if (project && dt > 0) {
-      facts_ = projection_.run(s, *ctx_.grid, *ctx_.pass, drag_, dt);
+      facts_ = projection_.run(s, *ctx_.grid, *ctx_.pass, drag_, dt,
+                               friction ? start_x_.data() : nullptr,
+                               friction ? start_y_.data() : nullptr);
       if (facts_.blowup.found && !blowup.found) blowup = facts_.blowup;
       Blowup moved;
       for (std::uint32_t p : projection_.participants())
@@ -301,13 +309,16 @@ class ExponentialIntegrator final : public Integrator {
     in.read(reinterpret_cast<char*>(&step_), 8);
     projection_.load(in);
   }
-  std::size_t bytes() const override { return projection_.bytes() + drag_.capacity() * 8; }
+  std::size_t bytes() const override {
+    return projection_.bytes() + (drag_.capacity() + start_x_.capacity() + start_y_.capacity()) * 8;
+  }
 
  private:
   IntegratorConfig config_;
   IntegratorContext ctx_;
   std::vector<ThreadSums> sums_;
   ContactProjection projection_;
+  std::vector<double> start_x_, start_y_;  // friction: the positions at the step's start
   // The ceiling, or less where a grain moving at `radii_per_s` would cross too far.
   double limited(double radii_per_s) const {
     if (!crossing_ || radii_per_s <= 0) return ceiling_;

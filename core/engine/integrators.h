@@ -22,7 +22,8 @@
 //   force. Contacts are then overdamped, compliant constraints (contact_projection.h): Jacobi
 //   sweeps find each contact's force so that the overlap ends at force / K_N, each grain moving
 //   in proportion to its mobility over the step; a touching pair falls at its mobility-weighted
-//   mean velocity and a grain on the bed rests at overlap = net weight / K_N. No friction.
+//   mean velocity and a grain on the bed rests at overlap = net weight / K_N. Friction: a
+//   tangential constraint per pair within the Coulomb limit, with the spins it turns.
 //   Step: the exact drag update needs no step limit of its own; what binds is that no grain may
 //   pass through another between two steps. After every step the next one is set so that no
 //   moving grain travels more than crossing_fraction (0.8) of its own radius, at its speed or,
