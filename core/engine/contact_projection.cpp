@@ -6,6 +6,7 @@
 #include <cmath>
 #include <istream>
 #include <ostream>
+#include <stdexcept>
 
 namespace sedem {
 
@@ -24,7 +25,7 @@ constexpr std::size_t kParallelFrom = std::size_t(1) << 15;
 void ContactProjection::configure(const ForceModel& model, int threads, int sweeps,
                                   std::size_t grains) {
   model_ = model;
-  friction_ = model.contact && model.friction && model.mu > 0;
+  friction_ = model.contact && model.friction && model.mu > 0;  // ForceModel may be built by hand
   grains_ = grains;
   threads_ = std::max(1, threads);
   sweeps_ = std::max(1, sweeps);
@@ -38,7 +39,7 @@ std::size_t ContactProjection::bytes() const {
   for (const auto* v : {&particle_, &count_, &first_, &slot_of_, &held_list_})
     b += v->capacity() * 4;
   for (const auto* v : {&mobility_, &response_, &moved_x_, &moved_y_}) b += v->capacity() * 8;
-  for (const auto* v : {&spin_mobility_, &turned_, &start_x_, &start_y_}) b += v->capacity() * 8;
+  for (const auto* v : {&spin_mobility_, &turned_}) b += v->capacity() * 8;
   b += held_.capacity() + kept_.capacity() * sizeof(PairHistory::Entry);
   b += kept_tangential_.capacity() * sizeof(PairHistory::Entry);
   return b + warm_.bytes() + warm_tangential_.bytes();
@@ -211,8 +212,8 @@ double ContactProjection::friction_change(Constraint& c, const EngineState& s, d
   const std::size_t ka = c.slot_a, kb = c.slot_b;
   const double ra = 0.5 * s.diameter[c.a], rb = 0.5 * s.diameter[c.b];
   const double tx = -dy / dist, ty = dx / dist;
-  const double slip = (s.x[c.a] - start_x_[ka] - (s.x[c.b] - start_x_[kb])) * tx +
-                      (s.y[c.a] - start_y_[ka] - (s.y[c.b] - start_y_[kb])) * ty +
+  const double slip = (s.x[c.a] - start_x_[c.a] - (s.x[c.b] - start_x_[c.b])) * tx +
+                      (s.y[c.a] - start_y_[c.a] - (s.y[c.b] - start_y_[c.b])) * ty +
                       ra * turned_[ka] + rb * turned_[kb];
   const double g = c.spring + slip, compliance = 1.0 / model_.kt;
   const double spin = ra * ra * spin_mobility_[ka] * std::max<std::uint32_t>(count_[ka], 1) +
@@ -359,15 +360,10 @@ ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid
   ProjectionFacts facts;
   collect(s, grid, pass);
   index_participants(s, drag, dt);
-  if (friction_) {
-    start_x_.resize(particle_.size());
-    start_y_.resize(particle_.size());
-    for (std::size_t k = 0; k < particle_.size(); ++k) {
-      const std::uint32_t p = particle_[k];
-      start_x_[k] = start_x ? start_x[p] : s.x[p];
-      start_y_[k] = start_y ? start_y[p] : s.y[p];
-    }
-  }
+  if (friction_ && !(start_x && start_y))
+    throw std::invalid_argument("contact projection: friction needs the step's start positions");
+  start_x_ = start_x;
+  start_y_ = start_y;
   sweep(s, Mode::start);
   for (std::uint32_t c : count_) facts.touching += c > 0;
   if (facts.touching == 0) {  // every particle stays at its free position

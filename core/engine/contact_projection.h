@@ -79,11 +79,12 @@ class ContactProjection {
   void configure(const ForceModel& model, int threads, int sweeps, std::size_t grains);
   // `drag[i]`: the linear drag coefficient particle i had over the step (mobility_of gives its
   // mobility). Moves (x, y) from their free values and adds the matching velocity change.
-  // With friction, (start_x, start_y) are the positions at the start of the step (before the
-  // free update), for the tangential motion over it.
+  // With friction (friction()), (start_x, start_y) are the positions at the start of the step
+  // (before the free update), for the tangential motion over it; required.
   ProjectionFacts run(EngineState& s, const NeighbourGrid& grid, const ForcePass& pass,
                       const std::vector<double>& drag, double dt, const double* start_x = nullptr,
                       const double* start_y = nullptr);
+  bool friction() const { return friction_; }
   // touching[i] > 0 for every particle in contact after the last run, 0 otherwise (size n).
   void mark_touching(std::vector<double>& touching) const;
   // The particles the last run's constraints involved (engine order): the only ones it moved.
@@ -134,11 +135,12 @@ class ContactProjection {
   // correction summed apart from the position (x - x_free would lose it to round-off).
   std::vector<std::uint32_t> particle_, count_, first_;
   std::vector<double> mobility_, response_, moved_x_, moved_y_;
-  // Friction: per participant, the spin's mobility (turn per unit torque over the step), its
-  // turn so far (spin * dt, then the corrections) and the step's start position.
-  std::vector<double> spin_mobility_, turned_, start_x_, start_y_;
+  // Friction: per participant, the spin's mobility (turn per unit torque over the step) and its
+  // turn so far (spin * dt, then the corrections); during run(), the step's start positions
+  // (engine order, the integrator's).
+  std::vector<double> spin_mobility_, turned_;
+  const double *start_x_ = nullptr, *start_y_ = nullptr;
   bool friction_ = false;
-  double dt_ = 0;
   std::vector<std::uint32_t> slot_of_;  // per particle (engine order): its slot, or kNone
   std::vector<std::uint8_t> held_;      // per particle (sample order): had a force last step
   std::vector<std::uint32_t> held_list_;

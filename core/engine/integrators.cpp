@@ -236,7 +236,7 @@ class ExponentialIntegrator final : public Integrator {
     const bool pass_forces = needs_force_pass(m);
     if (project) drag_.resize(s.size());
     // Friction needs the tangential motion over the step: the positions before it.
-    const bool friction = project && m.friction && m.mu > 0;
+    const bool friction = project && projection_.friction();
     if (friction) {
       start_x_.assign(s.x.begin(), s.x.end());
       start_y_.assign(s.y.begin(), s.y.end());

@@ -139,7 +139,7 @@ double ForwardModel::read_fields(const LayerFields& fields) const {
   return 0;
 }
 
-ReferenceSolution ForwardModel::reference(const Eigen::VectorXd& x) const {
+std::vector<SettlingClass> ForwardModel::classes_of(const Eigen::VectorXd& x) const {
   std::vector<SettlingClass> classes;
   classes.reserve(class_diameter_.size());
   const double c0 = suspension_.initial_concentration;
@@ -147,6 +147,11 @@ ReferenceSolution ForwardModel::reference(const Eigen::VectorXd& x) const {
     const double share = x(Eigen::Index(k / std::size_t(subclasses_))) / subclasses_;
     classes.push_back({class_diameter_[k], c0 * share, class_velocity_[k]});
   }
+  return classes;
+}
+
+ReferenceSolution ForwardModel::reference(const Eigen::VectorXd& x) const {
+  const auto classes = classes_of(x);
   const double rho_p = suspension_.particle_density;
   const double packing = scene_.instruments.reference_bed_packing;
   if (local_voidage_)
@@ -159,17 +164,8 @@ ReferenceSolution ForwardModel::reference(const Eigen::VectorXd& x) const {
 
 void ForwardModel::hold_speeds_at(const Eigen::VectorXd& x) {
   if (!local_voidage_) return;
-  held_ = HeldFronts{};
-  std::vector<SettlingClass> classes;
-  const double c0 = suspension_.initial_concentration;
-  for (std::size_t k = 0; k < class_diameter_.size(); ++k) {
-    const double share = x(Eigen::Index(k / std::size_t(subclasses_))) / subclasses_;
-    classes.push_back({class_diameter_[k], c0 * share, class_velocity_[k]});
-  }
-  HeldFronts held;
-  local_voidage_fronts(classes, suspension_.particle_density, scene_.fluid, scene_.forces.drag,
-                       &held);
-  held_ = std::move(held);
+  local_voidage_fronts(classes_of(x), suspension_.particle_density, scene_.fluid,
+                       scene_.forces.drag, &held_);
 }
 
 double ForwardModel::read(const Eigen::VectorXd& x, double time) const {

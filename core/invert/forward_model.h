@@ -100,6 +100,7 @@ class ForwardModel {
   double model_diameter(double time, double value) const;
 
  private:
+  std::vector<SettlingClass> classes_of(const Eigen::VectorXd& x) const;  // bins x subclasses
   ReferenceSolution reference(const Eigen::VectorXd& x) const;
   double read(const Eigen::VectorXd& x, double time) const;
   double read_fields(const LayerFields& fields) const;
