@@ -157,6 +157,7 @@ int run_invert(const InvertOptions& o) {
     j["gauss_newton_iterations"] = curve.iterations;
     j["band_coverage"] = curve.coverage;
     j["band_replicas"] = curve.replicas;
+    j["band_prior_scale"] = curve.prior_scale;
     j["resolved_diameter_m"] = {curve.resolved_min, curve.resolved_max};
     j["standard_reduction"] = standard_name;
     std::ofstream f(dir / "invert.json");

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/instruments/instrument_panel.h"
+#include "core/physics/drag.h"
 #include "core/physics/stokes.h"
 #include "core/reference/reference_field.h"
 #include "core/reference/reference_readings.h"
@@ -238,17 +239,22 @@ double ForwardModel::reading_depth(double value) const {
                   nominal_depth() - value * hydrometer_.mark_per_reading);
 }
 
+double ForwardModel::front_speed(double diameter) const {
+  const double rho_p = suspension_.particle_density;
+  if (local_voidage_)
+    return drag::di_felice_terminal_velocity(diameter, rho_p, scene_.fluid,
+                                             1.0 - suspension_.initial_concentration / rho_p);
+  return hindrance_ *
+         reference_terminal_velocity(scene_.forces.drag, diameter, rho_p, scene_.fluid);
+}
+
 double ForwardModel::model_diameter(double time, double value) const {
   const double speed = reading_depth(value) / time;
-  auto velocity = [&](double d) {
-    return hindrance_ * reference_terminal_velocity(scene_.forces.drag, d,
-                                                    suspension_.particle_density, scene_.fluid);
-  };
-  // The velocity grows with the diameter: bisection in log d from Stokes' estimate.
+  // The speed grows with the diameter: bisection in log d from Stokes' estimate.
   double lo = stokes_diameter(time, value) / 4.0, hi = stokes_diameter(time, value) * 4.0;
   for (int it = 0; it < 100 && hi / lo > 1 + 1e-12; ++it) {
     const double mid = std::sqrt(lo * hi);
-    (velocity(mid) < speed ? lo : hi) = mid;
+    (front_speed(mid) < speed ? lo : hi) = mid;
   }
   return std::sqrt(lo * hi);
 }

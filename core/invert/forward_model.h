@@ -95,8 +95,13 @@ class ForwardModel {
   double reading_depth(double value) const;
   // Stokes' diameter (Eq. 16) at reading_depth(value) and `time`, m.
   double stokes_diameter(double time, double value) const;
-  // The diameter the model's own settling law (the scene's drag, hindered if asked) brings
-  // from the surface to reading_depth(value) at `time`, m: where the reading pins the curve.
+  // How fast the front of a size falls from the surface in the model: the scene's drag law
+  // in the initial suspension's voidage (local_voidage: exactly the coarsest front's speed,
+  // and within the few per cent of hindrance of every other's), slowed by Richardson-Zaki,
+  // or in clear fluid, as instruments.reference.settling says.
+  double front_speed(double diameter) const;
+  // The diameter whose front front_speed brings from the surface to reading_depth(value) at
+  // `time`, m: where the reading pins the curve.
   double model_diameter(double time, double value) const;
 
  private:

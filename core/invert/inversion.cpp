@@ -96,14 +96,22 @@ class Problem {
     return nnls(a, b, start).x;
   }
 
+  Eigen::VectorXd residual(const Eigen::VectorXd& measured, const Eigen::VectorXd& x) const {
+    return j_ * x + offset_ - measured;
+  }
   double chi2(const Eigen::VectorXd& measured, const Eigen::VectorXd& x) const {
-    return ((j_ * x + offset_ - measured) / sigma_).squaredNorm();
+    return (residual(measured, x) / sigma_).squaredNorm();
   }
 
   // The discrepancy principle: the largest mu whose chi^2 stays within the target
-  // (tau sqrt(N) + sqrt(floor))^2, floor the chi^2 of the least smoothing. Bisection in log mu.
+  // (tau sqrt(N) + sqrt(floor))^2, floor the chi^2 of the least smoothing, and whose every
+  // residual stays within half a resolution step of the least smoothing's. Rounding leaves
+  // each reading within half a step of the truth's, so a fit that spends the chi^2 budget on
+  // one reading (the first sphere reading at 100 %, which alone says where the curve reaches
+  // 100 %) contradicts the data even when the sum allows it. Bisection in log mu.
   struct Choice {
     Eigen::VectorXd x;
+    Eigen::VectorXd floor_residual;  // per reading, of the least smoothing
     double mu = 0, chi2 = 0, target = 0, floor = 0;
   };
   Choice choose(const Eigen::VectorXd& measured, double tau,
@@ -113,8 +121,13 @@ class Problem {
     const Eigen::VectorXd rough = solve(measured, kMuMin, start);
     c.floor = chi2(measured, rough);
     c.target = std::pow(tau * std::sqrt(double(measured.size())) + std::sqrt(c.floor), 2);
+    c.floor_residual = residual(measured, rough);
+    const Eigen::ArrayXd bound = c.floor_residual.array().abs() + 0.5 * std::sqrt(12.0) * sigma_;
+    auto within = [&](const Eigen::VectorXd& x) {
+      return chi2(measured, x) <= c.target && (residual(measured, x).array().abs() <= bound).all();
+    };
     const Eigen::VectorXd smooth = solve(measured, kMuMax, start);
-    if (chi2(measured, smooth) <= c.target) {
+    if (within(smooth)) {
       c.x = smooth;
       c.mu = kMuMax;
     } else {
@@ -124,7 +137,7 @@ class Problem {
       for (int it = 0; it < 24; ++it) {
         const double mid = 0.5 * (lo + hi);
         const Eigen::VectorXd x = solve(measured, std::exp(mid), c.x);
-        if (chi2(measured, x) <= c.target) {
+        if (within(x)) {
           lo = mid;
           c.x = x;
           c.mu = std::exp(mid);
@@ -139,6 +152,19 @@ class Problem {
 
  public:
   Eigen::Index smoothing_rows() const { return l_.rows(); }
+  // The smoothing term at x: ||sqrt(mu s) L x||^2.
+  double roughness(const Eigen::VectorXd& x, double mu) const {
+    return mu * scale_ * (l_ * x).squaredNorm();
+  }
+  // How many of the smoothing rows the prior rather than the readings decides at mu: the
+  // trace of mu s L H^-1 L^T, H the normal matrix of the whole objective (without x >= 0).
+  double prior_rows(double mu) const {
+    const Eigen::Index n = j_.cols();
+    Eigen::MatrixXd h = (j_ / sigma_).transpose() * (j_ / sigma_) +
+                        mu * scale_ * l_.transpose() * l_ +
+                        omega_ * omega_ * Eigen::MatrixXd::Ones(n, n);
+    return mu * scale_ * (l_ * h.ldlt().solve(l_.transpose())).trace();
+  }
 
  private:
   Eigen::MatrixXd j_, l_;
@@ -275,7 +301,7 @@ InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<M
     measured(Eigen::Index(i)) = data[i].value;
     out.measured.push_back(data[i].value);
   }
-  // The grid: a node at each reading's Stokes diameter, refined between them.
+  // The grid: a node at each reading's pinned diameter, refined between them.
   {
     const ForwardModel probe(scene, test, log_grid(1e-6, 1e-4, 2), times);
     for (const auto& m : data)
@@ -296,6 +322,8 @@ InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<M
   out.chi2 = ((fitted - measured) / out.sigma).squaredNorm();
   out.chi2_target = choice.target;
   out.chi2_floor = choice.floor;
+  out.floor_residual.assign(choice.floor_residual.data(),
+                            choice.floor_residual.data() + choice.floor_residual.size());
   out.lambda = choice.mu;
   out.diameter = model.grid().nodes;
   out.shares.assign(x.data(), x.data() + x.size());
@@ -308,6 +336,14 @@ InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<M
   // and the smoothing term by a standard normal vector, and is solved by NNLS at the chosen
   // lambda; the band is the pointwise quantiles of the replicas' curves. Unlike a bootstrap
   // around the fit, this also spreads the curve where only the smoothing fixes it.
+  //
+  // The discrepancy principle sets lambda, i.e. how much to smooth, not how rough the curve
+  // may be: at that lambda the prior's variance can be far below the fitted curve's own
+  // roughness (the pipette's readings pin a curve with knees a smooth prior would call
+  // improbable), and the band would then be as narrow as the prior is wrong. The prior's
+  // perturbation is therefore scaled by gamma, gamma^2 = (the fit's smoothing term) / (the
+  // rows the readings decide), the residual-over-degrees-of-freedom estimate of the prior's
+  // variance at the fit, when that exceeds 1.
   out.coverage = options.coverage;
   out.replicas = std::max(0, options.bootstrap);
   if (out.replicas > 0) {
@@ -316,11 +352,14 @@ InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<M
     std::uniform_real_distribution<double> noise(-0.5 * resolution, 0.5 * resolution);
     std::normal_distribution<double> gauss;
     std::vector<std::vector<double>> curves(out.percent_finer.size());
+    const double decided = double(problem.smoothing_rows()) - problem.prior_rows(out.lambda);
+    out.prior_scale =
+        std::sqrt(std::max(1.0, problem.roughness(x, out.lambda) / std::max(1.0, decided)));
     for (int b = 0; b < out.replicas; ++b) {
       Eigen::VectorXd replica = measured;
       for (Eigen::Index i = 0; i < replica.size(); ++i) replica(i) += noise(rng);
       Eigen::VectorXd prior(problem.smoothing_rows());
-      for (Eigen::Index i = 0; i < prior.size(); ++i) prior(i) = gauss(rng);
+      for (Eigen::Index i = 0; i < prior.size(); ++i) prior(i) = out.prior_scale * gauss(rng);
       const auto p = curve_of(problem.solve(replica, out.lambda, x, prior));
       for (std::size_t k = 0; k < p.size(); ++k) curves[k].push_back(p[k]);
     }

@@ -46,9 +46,11 @@ struct InvertedCurve {
   double chi2 = 0;                       // sum ((fitted - measured) / sigma)^2
   double chi2_target = 0;                // what the discrepancy principle aimed at
   double chi2_floor = 0;                 // the least chi^2 any curve on the grid reaches
+  std::vector<double> floor_residual;    // per reading, fitted - measured at that floor
   int iterations = 0;                    // Gauss-Newton steps
   double coverage = 0;
   int replicas = 0;
+  double prior_scale = 1;  // gamma: the band's prior spread, calibrated to the fit
   double resolved_min = 0, resolved_max = 0;  // reading_diameter's extremes
   std::vector<double> reading_diameter;  // where each reading pins the curve, m (model_diameter)
 
