@@ -2,6 +2,7 @@
 // and what is allowed, and the command exits 2, as `sedem reduce` does. And the command on
 // the clay loam record of docs/invert.md.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -123,6 +124,16 @@ TEST(InvertCommand, ClayLoamRecordWritesCurveBandAndFigure) {
   EXPECT_EQ(header,
             "time_s,measured_g_per_l,fitted_g_per_l,pinned_diameter_m,inverted_percent_finer,"
             "standard_diameter_m,standard_percent_finer");
+  // The summary, read back: the discrepancy principle met, the band's prior spread never
+  // below the chosen lambda's, the resolved diameters those of the first and last readings.
+  const auto summary = nlohmann::json::parse(std::ifstream(dir / "invert.json"));
+  EXPECT_GT(summary.at("lambda").get<double>(), 0.0);
+  EXPECT_LE(summary.at("chi2").get<double>(), summary.at("chi2_target").get<double>() * 1.0001);
+  EXPECT_GE(summary.at("band_prior_scale").get<double>(), 1.0);
+  EXPECT_EQ(summary.at("band_replicas").get<int>(), 50);
+  const auto resolved = summary.at("resolved_diameter_m");
+  EXPECT_NEAR(resolved.at(0).get<double>(), 3.80e-6, 0.01e-6);
+  EXPECT_NEAR(resolved.at(1).get<double>(), 55.1e-6, 0.1e-6);
 }
 
 TEST(InvertCommand, BadReadingsExitTwoNamingTheValue) {
