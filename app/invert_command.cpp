@@ -5,10 +5,12 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "app/exit_codes.h"
+#include "app/run_record.h"
 #include "core/invert/invert_input.h"
 #include "core/lab/hydrometer_reduction.h"
 #include "core/lab/lab_csv.h"
@@ -38,7 +40,14 @@ void check_range(const char* flag, double value, double lo, double hi) {
 // 1000 mL, water at the readings' mean temperature, Stokes drag) from the flags.
 Scene make_setup(const InvertOptions& o, double temperature_c) {
   Scene s;
-  if (!o.scene.empty()) {
+  if (!o.run.empty()) {
+    const fs::path record_file = fs::path(o.run) / "run.json";
+    std::ifstream in(record_file);
+    const auto record = nlohmann::json::parse(in, nullptr, false);
+    if (!in || record.is_discarded() || !record.contains("scene") || !record["scene"].is_object())
+      throw SceneError(record_file.string() + ": not a sedem run record");
+    s = scene_from_json(record["scene"], record_file.string());
+  } else if (!o.scene.empty()) {
     s = load_scene(o.scene);
   } else {
     s.fluid.density = water::density(temperature_c);
@@ -50,13 +59,14 @@ Scene make_setup(const InvertOptions& o, double temperature_c) {
     s.sample.particle_density = o.specific_gravity.value_or(2.65) * 1000.0;
     s.sample.total_mass = o.dry_mass_g.value_or(50.0) * 1e-3;
   }
-  if (o.area_cm2 && !o.scene.empty())
+  const bool from_scene = !o.scene.empty() || !o.run.empty();
+  if (o.area_cm2 && from_scene)
     s.cylinder.diameter = std::sqrt(4.0 * *o.area_cm2 * 1e-4 / std::numbers::pi);
-  if (o.volume_ml && !o.scene.empty())
+  if (o.volume_ml && from_scene)
     s.cylinder.height =
         *o.volume_ml * 1e-6 / (std::numbers::pi / 4.0 * s.cylinder.diameter * s.cylinder.diameter);
-  if (o.specific_gravity && !o.scene.empty()) s.sample.particle_density = *o.specific_gravity * 1e3;
-  if (o.dry_mass_g && !o.scene.empty()) s.sample.total_mass = *o.dry_mass_g * 1e-3;
+  if (o.specific_gravity && from_scene) s.sample.particle_density = *o.specific_gravity * 1e3;
+  if (o.dry_mass_g && from_scene) s.sample.total_mass = *o.dry_mass_g * 1e-3;
   if (o.depth_cm) {
     check_range("--depth-cm", *o.depth_cm, 2.0, 0.9 * s.cylinder.height * 100.0);
     s.instruments.buoyancy_depth_fraction = *o.depth_cm * 1e-2 / s.cylinder.height;
@@ -74,11 +84,43 @@ std::string number(double v) {
   return b;
 }
 
+// A run's true curve (granulometry.csv's rows of test "true"): percent finer at each class
+// diameter, of grains of that diameter or smaller.
+std::vector<GradingPoint> read_true_curve(const fs::path& file) {
+  std::ifstream in(file);
+  std::vector<GradingPoint> curve;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("true,true,", 0) != 0) continue;
+    std::istringstream row(line.substr(10));
+    std::string time, diameter, percent;
+    std::getline(row, time, ',');
+    std::getline(row, diameter, ',');
+    std::getline(row, percent, ',');
+    curve.push_back({std::stod(diameter), std::stod(percent)});
+  }
+  return curve;
+}
+
+double true_at(const std::vector<GradingPoint>& curve, double d) {
+  double p = 0;
+  for (const auto& c : curve)
+    if (c.diameter <= d) p = std::max(p, c.percent_finer);
+  return p;
+}
+
 int run_invert(const InvertOptions& o) {
   const Test test = invert::parse_test(o.test);
-  std::ifstream in(o.readings);
+  if (o.readings.empty() == o.run.empty()) {
+    std::fprintf(stderr, "sedem invert: give READINGS.csv or --run DIR (one of them)\n");
+    return exit_code::usage;
+  }
+  const std::string source =
+      o.run.empty() ? o.readings
+                    : (fs::path(o.run) / ("readings_" + test_name(test) + ".csv")).string();
+  std::ifstream in(source);
   if (!in) {
-    std::fprintf(stderr, "sedem: %s: cannot open the readings file\n", o.readings.c_str());
+    std::fprintf(stderr, "sedem: %s: cannot open the readings file\n", source.c_str());
     return exit_code::invalid_scene;
   }
   // The readings in the laboratory's units and, for the 152H, the standard D422 reduction.
@@ -86,7 +128,20 @@ int run_invert(const InvertOptions& o) {
   std::vector<GradingPoint> standard;
   std::string standard_name;
   Scene scene;
-  if (test == Test::hydrometer) {
+  std::vector<GradingPoint> truth;
+  if (!o.run.empty()) {
+    scene = make_setup(o, 20.0);
+    std::vector<double> times, raw;
+    for (const auto& row : read_numeric_csv(in, {"time_s", invert::run_reading_column(test)})) {
+      times.push_back(row[0]);
+      raw.push_back(invert::run_reading_to_lab_unit(test, row[1]));
+    }
+    auto recorded = invert::record_simulated(scene, test, times, raw, o.resolution);
+    data = std::move(recorded.data);
+    standard = std::move(recorded.standard);
+    standard_name = recorded.standard_name;
+    truth = read_true_curve(fs::path(o.run) / "granulometry.csv");
+  } else if (test == Test::hydrometer) {
     const auto lab = read_lab_readings_csv(in);
     double mean_t = 20;
     if (!lab.empty()) {
@@ -134,18 +189,29 @@ int run_invert(const InvertOptions& o) {
   {
     std::ofstream csv(dir / "readings_fit.csv");
     csv << "time_s,measured_" << unit << ",fitted_" << unit << ",pinned_diameter_m,"
-        << "inverted_percent_finer,standard_diameter_m,standard_percent_finer\n";
-    for (std::size_t i = 0; i < data.size(); ++i)
+        << "inverted_percent_finer,standard_diameter_m,standard_percent_finer"
+        << (truth.empty() ? "" : ",true_percent_finer") << '\n';
+    for (std::size_t i = 0; i < data.size(); ++i) {
       csv << number(data[i].time) << ',' << number(curve.measured[i]) << ','
           << number(curve.fitted[i]) << ',' << number(curve.reading_diameter[i]) << ','
           << number(curve.at(curve.reading_diameter[i])) << ',' << number(standard[i].diameter)
-          << ',' << number(standard[i].percent_finer) << '\n';
+          << ',' << number(standard[i].percent_finer);
+      if (!truth.empty()) csv << ',' << number(true_at(truth, standard[i].diameter));
+      csv << '\n';
+    }
     if (!csv) return exit_code::io_failure;
+  }
+  // Against the run's true curve: the largest errors at the standard reduction's diameters.
+  double inverted_error = 0, standard_error = 0;
+  for (const auto& p : truth.empty() ? std::vector<GradingPoint>{} : standard) {
+    const double t = true_at(truth, p.diameter);
+    inverted_error = std::max(inverted_error, std::abs(curve.at(p.diameter) - t));
+    standard_error = std::max(standard_error, std::abs(p.percent_finer - t));
   }
   {
     nlohmann::json j;
     j["test"] = o.test;
-    j["readings"] = o.readings;
+    j["readings"] = source;
     j["scene"] = o.scene;
     j["resolution"] = o.resolution > 0 ? o.resolution : invert::default_resolution(test);
     j["resolution_unit"] = invert::reading_unit(test);
@@ -160,6 +226,8 @@ int run_invert(const InvertOptions& o) {
     j["band_prior_scale"] = curve.prior_scale;
     j["resolved_diameter_m"] = {curve.resolved_min, curve.resolved_max};
     j["standard_reduction"] = standard_name;
+    if (!truth.empty())
+      j["true_curve_error_pp"] = {{"inverted", inverted_error}, {"standard", standard_error}};
     std::ofstream f(dir / "invert.json");
     f << j.dump(2) << '\n';
     if (!f) return exit_code::io_failure;
@@ -189,6 +257,11 @@ int run_invert(const InvertOptions& o) {
     std::printf("lambda %.3g, chi2 %.2f (target %.2f, floor %.2f), %d replicas; wrote %s\n",
                 curve.lambda, curve.chi2, curve.chi2_target, curve.chi2_floor, curve.replicas,
                 o.out.c_str());
+    if (!truth.empty())
+      std::printf(
+          "against the run's true curve: inverted %.2f pp, %s %.2f pp (largest, at the "
+          "standard reduction's diameters)\n",
+          inverted_error, standard_name.c_str(), standard_error);
   }
   return exit_code::ok;
 }
@@ -203,11 +276,12 @@ int invert(const InvertOptions& options) {
     return exit_code::invalid_scene;
   } catch (const std::invalid_argument& e) {  // LabCsvError, InvalidLabReading, InvalidSetup,
                                               // InvalidInversionInput
-    std::fprintf(stderr, "sedem: %s: %s\n", options.readings.c_str(), e.what());
+    std::fprintf(stderr, "sedem: %s: %s\n",
+                 (options.run.empty() ? options.readings : options.run).c_str(), e.what());
     return exit_code::invalid_scene;
   } catch (const std::runtime_error& e) {  // the forward model: hydrometer off the column
-    std::fprintf(stderr, "sedem: %s: the forward model failed: %s\n", options.readings.c_str(),
-                 e.what());
+    std::fprintf(stderr, "sedem: %s: the forward model failed: %s\n",
+                 (options.run.empty() ? options.readings : options.run).c_str(), e.what());
     return exit_code::invalid_scene;
   }
 }

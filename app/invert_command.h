@@ -8,6 +8,7 @@ namespace sedem::app {
 struct InvertOptions {
   std::string readings;  // CSV: 152H as for `reduce`; sphere time_min, apparent_mass_g;
                          // pipette time_min, dry_mass_g
+  std::string run;       // or a sedem run's folder: its readings_<test>.csv, scene and true curve
   std::string test = "hydrometer";
   std::string scene;  // set-up from a scene file; empty: a laboratory's, from the flags
   std::string out = "invert-out";
@@ -28,7 +29,9 @@ struct InvertOptions {
 
 // `sedem invert READINGS.csv --test T`: the grading curve whose simulated test reproduces
 // the readings (docs/invert.md), with its band, the standard reduction beside it, a figure
-// and CSVs in --out. Returns the exit status: 2 for invalid readings or set-up.
+// and CSVs in --out. With --run DIR instead of READINGS.csv, a simulated run's readings,
+// rounded as a laboratory records them, and both curves against the run's true one.
+// Returns the exit status: 1 for neither or both inputs, 2 for invalid readings or set-up.
 int invert(const InvertOptions& options);
 
 }  // namespace sedem::app

@@ -119,11 +119,15 @@ int main(int argc, char** argv) {
       "invert",
       "From a laboratory's readings back to the grading curve: the curve whose simulated test "
       "reproduces them, with an uncertainty band, beside the standard reduction");
+  auto* invert_readings = invert_cmd->add_option(
+      "readings", invert_options.readings,
+      "CSV: hydrometer as for reduce; buoyancy time_min, apparent_mass_g; pipette "
+      "time_min, dry_mass_g");
   invert_cmd
-      ->add_option("readings", invert_options.readings,
-                   "CSV: hydrometer as for reduce; buoyancy time_min, apparent_mass_g; pipette "
-                   "time_min, dry_mass_g")
-      ->required();
+      ->add_option("--run", invert_options.run,
+                   "Instead of READINGS: a run folder, whose readings (rounded to the "
+                   "resolution), scene and true curve are used")
+      ->excludes(invert_readings);
   invert_cmd->add_option("--test", invert_options.test, "hydrometer, buoyancy or pipette")
       ->check(CLI::IsMember({"hydrometer", "buoyancy", "pipette"}))
       ->capture_default_str();

@@ -22,13 +22,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "core/invert/invert_input.h"
-#include "core/lab/hydrometer_reduction.h"
 #include "core/observe/simulate.h"
 #include "core/reference/reference_readings.h"
 #include "core/sample/sample_builder.h"
@@ -41,21 +39,11 @@ using namespace sedem;
 namespace fs = std::filesystem;
 using invert::Test;
 
-double round_to(double v, double step) {
-  return std::round(v / step) * step;
-}
-
-// The instrument's own value of a reading: 152H R (g/L), apparent mass (g), dry mass (g).
-double raw_value(const Reading& r, Test test) {
-  switch (test) {
-    case Test::hydrometer:
-      return r.extra[0];
-    case Test::buoyancy:
-      return r.extra[1] * 1e3;
-    case Test::pipette:
-      return r.extra[3] * 1e3;
-  }
-  return 0;
+// The instrument's own value of a reading, in the laboratory's unit.
+double raw_value(const TestReadings& t, const Reading& r, Test test) {
+  const auto& cols = t.extra_columns;
+  const auto at = std::find(cols.begin(), cols.end(), invert::run_reading_column(test));
+  return invert::run_reading_to_lab_unit(test, r.extra[std::size_t(at - cols.begin())]);
 }
 
 struct Case {
@@ -63,35 +51,12 @@ struct Case {
 };
 
 // The readings as recorded (rounded; the 152H's clear-liquid reading subtracted) and their
-// standard reduction.
-std::vector<invert::Measurement> recorded(const Scene& scene, Test test, const Case& c,
-                                          const std::vector<double>& shift,
-                                          std::vector<GradingPoint>* standard) {
-  const invert::ForwardModel model(scene, test, invert::log_grid(1e-6, 1e-4, 2), {});
-  const double res = invert::default_resolution(test);
-  const double clear = test == Test::hydrometer ? model.clear_liquid_reading() : 0.0;
-  std::vector<invert::Measurement> data;
-  std::vector<LabReading> lab;
-  for (std::size_t i = 0; i < c.times.size(); ++i) {
-    const double r = round_to(c.raw[i] + (shift.empty() ? 0.0 : shift[i]), res);
-    data.push_back({c.times[i], r - clear});
-    lab.push_back({c.times[i], r, 20.0, clear});
-  }
-  if (standard) {
-    if (test == Test::hydrometer) {
-      // D422's percent finer assumes 1000 mL: the specimen's mass per litre of suspension.
-      const double volume_l = std::numbers::pi / 4.0 * scene.cylinder.diameter *
-                              scene.cylinder.diameter * scene.cylinder.height * 1e3;
-      const LabSpecimen specimen{scene.sample.particle_density / 1000.0,
-                                 scene.sample.total_mass / volume_l};
-      standard->clear();
-      for (const auto& p : reduce_astm_d422(lab, specimen))
-        standard->push_back({p.diameter, p.percent_finer});
-    } else {
-      *standard = invert::standard_reduction(scene, test, data);
-    }
-  }
-  return data;
+// standard reduction, each raw value first shifted by `shift` (noisy copies).
+invert::RecordedTest recorded(const Scene& scene, Test test, const Case& c,
+                              const std::vector<double>& shift) {
+  std::vector<double> raw = c.raw;
+  for (std::size_t i = 0; i < shift.size() && i < raw.size(); ++i) raw[i] += shift[i];
+  return invert::record_simulated(scene, test, c.times, raw);
 }
 
 }  // namespace
@@ -154,10 +119,11 @@ int main(int argc, char** argv) {
       Case c;
       for (const auto& r : it->rows) {
         c.times.push_back(r.time);
-        c.raw.push_back(raw_value(r, test));
+        c.raw.push_back(raw_value(*it, r, test));
       }
-      std::vector<GradingPoint> standard;
-      const auto data = recorded(scene, test, c, {}, &standard);
+      const auto rec = recorded(scene, test, c, {});
+      const auto& data = rec.data;
+      const auto& standard = rec.standard;
       invert::InversionOptions options;
       options.bootstrap = 0;
       options.refine = refine;
@@ -194,7 +160,7 @@ int main(int argc, char** argv) {
           for (std::size_t i = 0; i < c.raw.size(); ++i) shift.push_back(noise(rng));
           o.seed = std::uint64_t(k + 1);
           const auto noisy =
-              invert::invert_readings(scene, test, recorded(scene, test, c, shift, nullptr), o);
+              invert::invert_readings(scene, test, recorded(scene, test, c, shift).data, o);
           for (double d : noisy.reading_diameter) {
             const double truth = true_percent_finer(sample.classes, d);
             if (truth <= 0.5 || truth >= 99.5) continue;

@@ -1,7 +1,10 @@
 #include "core/invert/invert_input.h"
 
+#include <cmath>
+#include <numbers>
 #include <stdexcept>
 
+#include "core/lab/hydrometer_reduction.h"
 #include "core/lab/lab_csv.h"
 #include "core/physics/stokes.h"
 
@@ -45,6 +48,62 @@ std::vector<GradingPoint> standard_reduction(const Scene& scene, Test test,
     out.push_back(p);
   }
   return out;
+}
+
+std::string standard_name(Test test) {
+  switch (test) {
+    case Test::hydrometer:
+      return "ASTM D422";
+    case Test::buoyancy:
+      return "Eq. 22 (sphere)";
+    case Test::pipette:
+      return "Eq. 17 (pipette)";
+  }
+  return "";
+}
+
+RecordedTest record_simulated(const Scene& scene, Test test, const std::vector<double>& times,
+                              const std::vector<double>& raw, double resolution) {
+  if (times.size() != raw.size())
+    throw std::invalid_argument("record_simulated: as many times as readings");
+  const double step = resolution > 0 ? resolution : default_resolution(test);
+  const ForwardModel model(scene, test, log_grid(1e-6, 1e-4, 2), {});
+  const double clear = test == Test::hydrometer ? model.clear_liquid_reading() : 0.0;
+  RecordedTest out;
+  out.standard_name = standard_name(test);
+  std::vector<LabReading> lab;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const double r = std::round(raw[i] / step) * step;
+    out.data.push_back({times[i], r - clear});
+    lab.push_back({times[i], r, 20.0, clear});
+  }
+  if (test == Test::hydrometer) {
+    const double volume_l = std::numbers::pi / 4.0 * scene.cylinder.diameter *
+                            scene.cylinder.diameter * scene.cylinder.height * 1e3;
+    const LabSpecimen specimen{scene.sample.particle_density / 1000.0,
+                               scene.sample.total_mass / volume_l};
+    for (const auto& p : reduce_astm_d422(lab, specimen))
+      out.standard.push_back({p.diameter, p.percent_finer});
+  } else {
+    out.standard = standard_reduction(scene, test, out.data);
+  }
+  return out;
+}
+
+std::string run_reading_column(Test test) {
+  switch (test) {
+    case Test::hydrometer:
+      return "reading_g_per_l";
+    case Test::buoyancy:
+      return "apparent_mass_kg";
+    case Test::pipette:
+      return "dry_mass_kg";
+  }
+  return "";
+}
+
+double run_reading_to_lab_unit(Test test, double value) {
+  return test == Test::hydrometer ? value : value * 1e3;
 }
 
 }  // namespace sedem::invert

@@ -136,6 +136,48 @@ TEST(InvertCommand, ClayLoamRecordWritesCurveBandAndFigure) {
   EXPECT_NEAR(resolved.at(1).get<double>(), 55.1e-6, 0.1e-6);
 }
 
+// A simulated run inverted from its folder: the readings rounded as a laboratory records
+// them, reduced again as the run reduced them (within what rounding to 1 mg moves), and both
+// curves against the run's true curve.
+TEST(InvertCommand, RunFolderAgainstItsTrueCurve) {
+  const auto run = kOut / "run_sample5";
+  fs::remove_all(run);
+  const auto r = test::run_sedem(
+      "run " + std::string(SEDEM_SOURCE_DIR) + "/scenes/sample5.toml --set " +
+      "sample.simulated_count=3000 --set output.frames=false --set output.particles=false " +
+      "--out " + run.string() + " -q");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto dir = kOut / "run_sample5_inverted";
+  const auto inv = test::run_sedem("invert --run " + run.string() +
+                                   " --test buoyancy --replicas 20 -q --out " + dir.string());
+  ASSERT_EQ(inv.status, 0) << inv.output;
+
+  std::ifstream ran(run / "readings_buoyancy.csv");
+  const auto run_rows = read_numeric_csv(ran, {"time_s", "percent_finer"});
+  std::ifstream fit(dir / "readings_fit.csv");
+  const auto rows = read_numeric_csv(
+      fit, {"time_s", "measured_g", "standard_percent_finer", "true_percent_finer"});
+  ASSERT_EQ(rows.size(), run_rows.size());
+  double standard_error = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_DOUBLE_EQ(rows[i][0], run_rows[i][0]);
+    EXPECT_NEAR(rows[i][1], std::round(rows[i][1] * 1e3) / 1e3, 1e-9);  // to the mg
+    EXPECT_NEAR(rows[i][2], run_rows[i][1], 0.3);  // 0.5 mg is about 0.25 % of the range
+    standard_error = std::max(standard_error, std::abs(rows[i][2] - rows[i][3]));
+  }
+  const auto summary = nlohmann::json::parse(std::ifstream(dir / "invert.json"));
+  EXPECT_NEAR(summary.at("true_curve_error_pp").at("standard").get<double>(), standard_error,
+              1e-6);  // the CSV's 9 digits
+  EXPECT_LT(summary.at("true_curve_error_pp").at("inverted").get<double>(), 100.0);
+
+  EXPECT_EQ(test::run_sedem("invert --test buoyancy --out " + dir.string()).status, 1);
+  const auto missing = test::run_sedem("invert --run " + (kOut / "no_run").string() +
+                                       " --test pipette --out " + dir.string());
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.output.find("cannot open the readings file"), std::string::npos)
+      << missing.output;
+}
+
 TEST(InvertCommand, BadReadingsExitTwoNamingTheValue) {
   auto r = test::run_sedem(
       "invert " +
