@@ -123,16 +123,19 @@ int main(int argc, char** argv) {
       "readings", invert_options.readings,
       "CSV: hydrometer as for reduce; buoyancy time_min, apparent_mass_g; pipette "
       "time_min, dry_mass_g");
-  invert_cmd
-      ->add_option("--run", invert_options.run,
-                   "Instead of READINGS: a run folder, whose readings (rounded to the "
-                   "resolution), scene and true curve are used")
-      ->excludes(invert_readings);
+  auto* invert_run =
+      invert_cmd
+          ->add_option("--run", invert_options.run,
+                       "Instead of READINGS: a run folder, whose readings (rounded to the "
+                       "resolution), scene and true curve are used")
+          ->excludes(invert_readings);
   invert_cmd->add_option("--test", invert_options.test, "hydrometer, buoyancy or pipette")
       ->check(CLI::IsMember({"hydrometer", "buoyancy", "pipette"}))
       ->capture_default_str();
-  invert_cmd->add_option("--scene", invert_options.scene,
-                         "Set-up from a scene (cylinder, fluid, grains, mass, instruments)");
+  invert_cmd
+      ->add_option("--scene", invert_options.scene,
+                   "Set-up from a scene (cylinder, fluid, grains, mass, instruments)")
+      ->excludes(invert_run);
   invert_cmd->add_option("--out", invert_options.out, "Output folder")->capture_default_str();
   invert_cmd->add_option("--gs", invert_options.specific_gravity,
                          "Specific gravity of the solids (default 2.65)");

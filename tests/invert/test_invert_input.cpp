@@ -171,6 +171,11 @@ TEST(InvertCommand, RunFolderAgainstItsTrueCurve) {
   EXPECT_LT(summary.at("true_curve_error_pp").at("inverted").get<double>(), 100.0);
 
   EXPECT_EQ(test::run_sedem("invert --test buoyancy --out " + dir.string()).status, 1);
+  EXPECT_EQ(
+      test::run_sedem("invert --run " + run.string() + " --scene " + std::string(SEDEM_SOURCE_DIR) +
+                      "/scenes/sample5.toml --out " + dir.string())
+          .status,
+      1);  // the run's scene is its own
   const auto missing = test::run_sedem("invert --run " + (kOut / "no_run").string() +
                                        " --test pipette --out " + dir.string());
   EXPECT_EQ(missing.status, 2);
