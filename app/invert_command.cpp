@@ -244,6 +244,10 @@ int run_invert(const InvertOptions& o) {
     fig.standard_diameter_m.push_back(p.diameter);
     fig.standard_percent_finer.push_back(p.percent_finer);
   }
+  for (const auto& p : truth) {
+    fig.true_diameter_m.push_back(p.diameter);
+    fig.true_percent_finer.push_back(p.percent_finer);
+  }
   render::write_invert_figure(fig, dir / "invert");
 
   if (!o.quiet) {

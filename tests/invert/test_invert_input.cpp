@@ -169,6 +169,10 @@ TEST(InvertCommand, RunFolderAgainstItsTrueCurve) {
   EXPECT_NEAR(summary.at("true_curve_error_pp").at("standard").get<double>(), standard_error,
               1e-6);  // the CSV's 9 digits
   EXPECT_LT(summary.at("true_curve_error_pp").at("inverted").get<double>(), 100.0);
+  std::ifstream figure(dir / "invert.csv");  // the figure draws the true curve too
+  std::string columns;
+  std::getline(figure, columns);
+  EXPECT_EQ(columns.rfind("true:diameter_um,true:percent_finer,inverted:", 0), 0u) << columns;
 
   EXPECT_EQ(test::run_sedem("invert --test buoyancy --out " + dir.string()).status, 1);
   EXPECT_EQ(
