@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -15,6 +14,7 @@
 #include "core/lab/hydrometer_reduction.h"
 #include "core/lab/lab_csv.h"
 #include "core/lab/water.h"
+#include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
 #include "render/invert_figure.h"
 
@@ -84,31 +84,6 @@ std::string number(double v) {
   return b;
 }
 
-// A run's true curve (granulometry.csv's rows of test "true"): percent finer at each class
-// diameter, of grains of that diameter or smaller.
-std::vector<GradingPoint> read_true_curve(const fs::path& file) {
-  std::ifstream in(file);
-  std::vector<GradingPoint> curve;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("true,true,", 0) != 0) continue;
-    std::istringstream row(line.substr(10));
-    std::string time, diameter, percent;
-    std::getline(row, time, ',');
-    std::getline(row, diameter, ',');
-    std::getline(row, percent, ',');
-    curve.push_back({std::stod(diameter), std::stod(percent)});
-  }
-  return curve;
-}
-
-double true_at(const std::vector<GradingPoint>& curve, double d) {
-  double p = 0;
-  for (const auto& c : curve)
-    if (c.diameter <= d) p = std::max(p, c.percent_finer);
-  return p;
-}
-
 int run_invert(const InvertOptions& o) {
   const Test test = invert::parse_test(o.test);
   if (o.readings.empty() == o.run.empty()) {
@@ -126,21 +101,22 @@ int run_invert(const InvertOptions& o) {
   // The readings in the laboratory's units and, for the 152H, the standard D422 reduction.
   std::vector<invert::Measurement> data;
   std::vector<GradingPoint> standard;
-  std::string standard_name;
+  const std::string standard_name = invert::reading_format(test).standard_name;
   Scene scene;
-  std::vector<GradingPoint> truth;
+  // A run's true curve: its sample's size classes, as the run drew them from its scene.
+  std::vector<SizeClass> truth;
   if (!o.run.empty()) {
     scene = make_setup(o, 20.0);
+    const auto& format = invert::reading_format(test);
     std::vector<double> times, raw;
-    for (const auto& row : read_numeric_csv(in, {"time_s", invert::run_reading_column(test)})) {
+    for (const auto& row : read_numeric_csv(in, {"time_s", format.run_column})) {
       times.push_back(row[0]);
-      raw.push_back(invert::run_reading_to_lab_unit(test, row[1]));
+      raw.push_back(format.run_to_lab * row[1]);
     }
     auto recorded = invert::record_simulated(scene, test, times, raw, o.resolution);
     data = std::move(recorded.data);
     standard = std::move(recorded.standard);
-    standard_name = recorded.standard_name;
-    truth = read_true_curve(fs::path(o.run) / "granulometry.csv");
+    truth = plan_sample(scene).classes;
   } else if (test == Test::hydrometer) {
     const auto lab = read_lab_readings_csv(in);
     double mean_t = 20;
@@ -153,13 +129,11 @@ int run_invert(const InvertOptions& o) {
     for (const auto& p : reduce_astm_d422(lab, specimen))  // validates the readings
       standard.push_back({p.diameter, p.percent_finer});
     for (const auto& r : lab) data.push_back({r.time, r.reading - r.composite_correction});
-    standard_name = "ASTM D422";
   } else {
     data = invert::read_measurements_csv(in, test);
     scene = make_setup(o, o.temperature_c.value_or(20.0));
     invert::validate_measurements(scene, test, data, {});
     standard = invert::standard_reduction(scene, test, data);
-    standard_name = test == Test::buoyancy ? "Eq. 22 (sphere)" : "Eq. 17 (pipette)";
   }
   invert::InversionOptions options;
   options.resolution = o.resolution;
@@ -196,7 +170,7 @@ int run_invert(const InvertOptions& o) {
           << number(curve.fitted[i]) << ',' << number(curve.reading_diameter[i]) << ','
           << number(curve.at(curve.reading_diameter[i])) << ',' << number(standard[i].diameter)
           << ',' << number(standard[i].percent_finer);
-      if (!truth.empty()) csv << ',' << number(true_at(truth, standard[i].diameter));
+      if (!truth.empty()) csv << ',' << number(true_percent_finer(truth, standard[i].diameter));
       csv << '\n';
     }
     if (!csv) return exit_code::io_failure;
@@ -204,7 +178,7 @@ int run_invert(const InvertOptions& o) {
   // Against the run's true curve: the largest errors at the standard reduction's diameters.
   double inverted_error = 0, standard_error = 0;
   for (const auto& p : truth.empty() ? std::vector<GradingPoint>{} : standard) {
-    const double t = true_at(truth, p.diameter);
+    const double t = true_percent_finer(truth, p.diameter);
     inverted_error = std::max(inverted_error, std::abs(curve.at(p.diameter) - t));
     standard_error = std::max(standard_error, std::abs(p.percent_finer - t));
   }
@@ -244,7 +218,7 @@ int run_invert(const InvertOptions& o) {
     fig.standard_diameter_m.push_back(p.diameter);
     fig.standard_percent_finer.push_back(p.percent_finer);
   }
-  for (const auto& p : truth) {
+  for (const auto& p : true_grading_curve(truth)) {
     fig.true_diameter_m.push_back(p.diameter);
     fig.true_percent_finer.push_back(p.percent_finer);
   }

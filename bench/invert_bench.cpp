@@ -42,8 +42,9 @@ using invert::Test;
 // The instrument's own value of a reading, in the laboratory's unit.
 double raw_value(const TestReadings& t, const Reading& r, Test test) {
   const auto& cols = t.extra_columns;
-  const auto at = std::find(cols.begin(), cols.end(), invert::run_reading_column(test));
-  return invert::run_reading_to_lab_unit(test, r.extra[std::size_t(at - cols.begin())]);
+  const auto& format = invert::reading_format(test);
+  const auto at = std::find(cols.begin(), cols.end(), format.run_column);
+  return format.run_to_lab * r.extra[std::size_t(at - cols.begin())];
 }
 
 struct Case {

@@ -134,10 +134,12 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
         const double dist2 = dx * dx + dy * dy;
         const double rj = 0.5 * d[j], reach = ri + rj, rmin = std::min(ri, rj);
         const double near = reach + kSkin * rmin;
-        const bool was_held = held_i && held[origin[j]];
-        const double force = was_held ? warm_.find(PairHistory::key(oi, origin[j])) : 0.0;
-        const double tangential =
-            was_held && friction_ ? warm_tangential_.find(PairHistory::key(oi, origin[j])) : 0.0;
+        double force = 0, tangential = 0;
+        if (held_i && held[origin[j]]) {
+          const auto key = PairHistory::key(oi, origin[j]);
+          force = warm_.find(key);
+          if (friction_) tangential = warm_tangential_.find(key);
+        }
         if (dist2 < near * near || force > 0)
           found.push_back({i, j, 0, 0, force, 0, 0, false, tangential, -tangential / model_.kt, 0});
       }

@@ -10,23 +10,18 @@
 
 namespace sedem::invert {
 
-std::string reading_column(Test test) {
-  switch (test) {
-    case Test::hydrometer:
-      return "reading_g_per_l";
-    case Test::buoyancy:
-      return "apparent_mass_g";
-    case Test::pipette:
-      return "dry_mass_g";
-  }
-  return "";
+const ReadingFormat& reading_format(Test test) {
+  static const ReadingFormat hydrometer{"reading_g_per_l", "reading_g_per_l", 1.0, "ASTM D422"};
+  static const ReadingFormat sphere{"apparent_mass_g", "apparent_mass_kg", 1e3, "Eq. 22 (sphere)"};
+  static const ReadingFormat pipette{"dry_mass_g", "dry_mass_kg", 1e3, "Eq. 17 (pipette)"};
+  return test == Test::hydrometer ? hydrometer : test == Test::buoyancy ? sphere : pipette;
 }
 
 std::vector<Measurement> read_measurements_csv(std::istream& in, Test test) {
   if (test == Test::hydrometer)
     throw std::invalid_argument("read_measurements_csv: the 152H's readings are read by core/lab");
   std::vector<Measurement> out;
-  for (const auto& row : read_numeric_csv(in, {"time_min", reading_column(test)}))
+  for (const auto& row : read_numeric_csv(in, {"time_min", reading_format(test).lab_column}))
     out.push_back({row[0] * 60.0, row[1]});
   return out;
 }
@@ -50,18 +45,6 @@ std::vector<GradingPoint> standard_reduction(const Scene& scene, Test test,
   return out;
 }
 
-std::string standard_name(Test test) {
-  switch (test) {
-    case Test::hydrometer:
-      return "ASTM D422";
-    case Test::buoyancy:
-      return "Eq. 22 (sphere)";
-    case Test::pipette:
-      return "Eq. 17 (pipette)";
-  }
-  return "";
-}
-
 RecordedTest record_simulated(const Scene& scene, Test test, const std::vector<double>& times,
                               const std::vector<double>& raw, double resolution) {
   if (times.size() != raw.size())
@@ -70,7 +53,6 @@ RecordedTest record_simulated(const Scene& scene, Test test, const std::vector<d
   const ForwardModel model(scene, test, log_grid(1e-6, 1e-4, 2), {});
   const double clear = test == Test::hydrometer ? model.clear_liquid_reading() : 0.0;
   RecordedTest out;
-  out.standard_name = standard_name(test);
   std::vector<LabReading> lab;
   for (std::size_t i = 0; i < times.size(); ++i) {
     const double r = std::round(raw[i] / step) * step;
@@ -88,22 +70,6 @@ RecordedTest record_simulated(const Scene& scene, Test test, const std::vector<d
     out.standard = standard_reduction(scene, test, out.data);
   }
   return out;
-}
-
-std::string run_reading_column(Test test) {
-  switch (test) {
-    case Test::hydrometer:
-      return "reading_g_per_l";
-    case Test::buoyancy:
-      return "apparent_mass_kg";
-    case Test::pipette:
-      return "dry_mass_kg";
-  }
-  return "";
-}
-
-double run_reading_to_lab_unit(Test test, double value) {
-  return test == Test::hydrometer ? value : value * 1e3;
 }
 
 }  // namespace sedem::invert

@@ -9,11 +9,20 @@
 
 namespace sedem::invert {
 
-// The column of a test's reading in a laboratory CSV: reading_g_per_l (152H, read with
-// core/lab's read_lab_readings_csv), apparent_mass_g (sphere), dry_mass_g (pipette).
-std::string reading_column(Test test);
+// How a test's readings are recorded and reduced.
+struct ReadingFormat {
+  // The laboratory CSV's column: reading_g_per_l (152H, read with core/lab's
+  // read_lab_readings_csv), apparent_mass_g (sphere), dry_mass_g (pipette).
+  const char* lab_column;
+  // A run's readings_<test>.csv column, and its factor to the laboratory's unit: g/L as it
+  // is; the sphere's apparent_mass_kg and the pipette's dry_mass_kg to g.
+  const char* run_column;
+  double run_to_lab;
+  const char* standard_name;  // "ASTM D422", "Eq. 22 (sphere)", "Eq. 17 (pipette)"
+};
+const ReadingFormat& reading_format(Test test);
 
-// The sphere's or the pipette's readings: a CSV with time_min and reading_column(test)
+// The sphere's or the pipette's readings: a CSV with time_min and the lab_column
 // (any order, other columns ignored). Times to s, values as read (g). Throws LabCsvError.
 std::vector<Measurement> read_measurements_csv(std::istream& in, Test test);
 
@@ -29,17 +38,12 @@ std::vector<GradingPoint> standard_reduction(const Scene& scene, Test test,
 // liquid (what a composite correction removes, taken as exact); and their standard
 // reduction: ASTM D422 for the 152H (its effective depth; the specimen's mass per litre of
 // the scene's cylinder, as D422 assumes 1000 mL; 20 C), standard_reduction for the others.
+// The standard reduction is reading_format(test).standard_name.
 struct RecordedTest {
   std::vector<Measurement> data;
   std::vector<GradingPoint> standard;
-  std::string standard_name;  // "ASTM D422", "Eq. 22 (sphere)", "Eq. 17 (pipette)"
 };
 RecordedTest record_simulated(const Scene& scene, Test test, const std::vector<double>& times,
                               const std::vector<double>& raw, double resolution = 0);
-
-// The instrument's own value of a reading of a run (readings_<test>.csv's columns), in the
-// laboratory's unit: reading_g_per_l; apparent_mass_kg and dry_mass_kg in g.
-std::string run_reading_column(Test test);
-double run_reading_to_lab_unit(Test test, double value);
 
 }  // namespace sedem::invert
