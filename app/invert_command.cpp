@@ -152,11 +152,16 @@ int run_invert(const InvertOptions& o) {
   const fs::path dir(o.out);
   {
     std::ofstream csv(dir / "inverted_curve.csv");
-    csv << "diameter_m,percent_finer,percent_finer_low,percent_finer_high\n";
+    csv << "diameter_m,percent_finer,percent_finer_low,percent_finer_high,readings_allow_low,"
+           "readings_allow_high\n";
     for (std::size_t k = 0; k < curve.diameter.size(); ++k)
       csv << number(curve.diameter[k]) << ',' << number(curve.percent_finer[k]) << ','
           << (curve.lower.empty() ? "" : number(curve.lower[k])) << ','
-          << (curve.upper.empty() ? "" : number(curve.upper[k])) << '\n';
+          << (curve.upper.empty() ? "" : number(curve.upper[k])) << ','
+          << (curve.bound_lower.empty() ? "" : number(curve.bound_lower_at(curve.diameter[k])))
+          << ','
+          << (curve.bound_upper.empty() ? "" : number(curve.bound_upper_at(curve.diameter[k])))
+          << '\n';
     if (!csv) return exit_code::io_failure;
   }
   const std::string unit = test == Test::hydrometer ? "g_per_l" : "g";
@@ -174,6 +179,16 @@ int run_invert(const InvertOptions& o) {
       csv << '\n';
     }
     if (!csv) return exit_code::io_failure;
+  }
+  // Where the readings leave the curve most open, among the nodes they resolve.
+  double open_width = 0, open_at = 0;
+  for (std::size_t k = 0; k < curve.bound_diameter.size(); ++k) {
+    const double d = curve.bound_diameter[k];
+    if (d < curve.resolved_min || d > curve.resolved_max) continue;
+    if (curve.bound_upper[k] - curve.bound_lower[k] > open_width) {
+      open_width = curve.bound_upper[k] - curve.bound_lower[k];
+      open_at = d;
+    }
   }
   // Against the run's true curve: the largest errors at the standard reduction's diameters.
   double inverted_error = 0, standard_error = 0;
@@ -200,6 +215,10 @@ int run_invert(const InvertOptions& o) {
     j["band_prior_scale"] = curve.prior_scale;
     j["resolved_diameter_m"] = {curve.resolved_min, curve.resolved_max};
     j["standard_reduction"] = standard_name;
+    if (!curve.bound_lower.empty())
+      j["readings_allow"] = {{"widest_pp", open_width},
+                             {"at_diameter_m", open_at},
+                             {"tolerance", curve.bound_tolerance}};
     if (!truth.empty())
       j["true_curve_error_pp"] = {{"inverted", inverted_error}, {"standard", standard_error}};
     std::ofstream f(dir / "invert.json");
@@ -207,12 +226,16 @@ int run_invert(const InvertOptions& o) {
     if (!f) return exit_code::io_failure;
   }
   render::InvertFigureInput fig;
-  fig.title = "Inverted grading curve (" + o.test + ") and " + standard_name;
+  fig.title = "Inverted grading curve (" + o.test + ") and " + standard_name +
+              (curve.bound_lower.empty() ? "" : "; grey: what the readings allow");
   fig.diameter_m = curve.diameter;
   fig.percent_finer = curve.percent_finer;
   fig.lower = curve.lower;
   fig.upper = curve.upper;
   fig.band_name = std::to_string(int(std::lround(100 * curve.coverage))) + " % band";
+  fig.bound_diameter_m = curve.bound_diameter;
+  fig.bound_lower = curve.bound_lower;
+  fig.bound_upper = curve.bound_upper;
   fig.standard_name = standard_name;
   for (const auto& p : standard) {
     fig.standard_diameter_m.push_back(p.diameter);
@@ -235,6 +258,11 @@ int run_invert(const InvertOptions& o) {
     std::printf("lambda %.3g, chi2 %.2f (target %.2f, floor %.2f), %d replicas; wrote %s\n",
                 curve.lambda, curve.chi2, curve.chi2_target, curve.chi2_floor, curve.replicas,
                 o.out.c_str());
+    if (open_width > 0)
+      std::printf(
+          "the readings allow %.1f to %.1f %% finer at %.1f um (their widest, within the range "
+          "they resolve): there the curve is the smoothing's choice\n",
+          curve.bound_lower_at(open_at), curve.bound_upper_at(open_at), open_at * 1e6);
     if (!truth.empty())
       std::printf(
           "against the run's true curve: inverted %.2f pp, %s %.2f pp (largest, at the "

@@ -1,8 +1,10 @@
 // The inversion's round trip over the paper's five samples: each test's readings of a known
 // sample, rounded to the instrument's resolution, inverted (`sedem invert`'s core), and the
 // inverted curve's largest |inverted - true| against the standard reduction's
-// |reduced - true|, both at the standard reduction's diameters; then the band's coverage of
-// the true curve over noisy copies of the readings.
+// |reduced - true|, both at the standard reduction's diameters, and whether the readings'
+// strict bounds hold the truth there (half their widest: the least largest error any curve
+// inside them can be sure of); then the band's and the bounds' coverage of the true curve over
+// noisy copies of the readings.
 //
 //   sedem_bench_invert [--scenes ...] [--source reference|dem] [--count 1000]
 //                      [--tests hydrometer,buoyancy,pipette] [--copies 100] [--replicas 100]
@@ -92,9 +94,12 @@ int main(int argc, char** argv) {
   fs::create_directories(out);
   std::ofstream csv(fs::path(out) / "invert_bench.csv");
   csv << "sample,test,source,readings,standard_max_pp,inverted_max_pp,goal_met,lambda,chi2,"
-         "chi2_target,coverage,band_width_pp,invert_s\n";
-  std::printf("%-8s %-10s %-9s %3s %9s %9s %5s %9s %8s %8s %8s %8s\n", "sample", "test", "source",
-              "n", "std_pp", "inv_pp", "goal", "lambda", "chi2", "cover", "width", "inv_s");
+         "chi2_target,coverage,band_width_pp,bounds_hold_truth,bounds_half_width_pp,bounds_"
+         "coverage,"
+         "invert_s\n";
+  std::printf("%-8s %-10s %-9s %3s %9s %9s %5s %9s %8s %8s %8s %6s %8s %8s %8s\n", "sample", "test",
+              "source", "n", "std_pp", "inv_pp", "goal", "lambda", "chi2", "cover", "width",
+              "in_bd", "bd_half", "bd_cover", "inv_s");
   for (const auto& file : scenes) {
     std::vector<std::string> overrides = sets;
     if (source == "dem") overrides.push_back("sample.simulated_count=" + std::to_string(count));
@@ -133,19 +138,26 @@ int main(int argc, char** argv) {
       const auto curve = invert::invert_readings(scene, test, data, options);
       const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      // The readings' bounds at the standard reduction's diameters: whether they hold the truth,
+      // and the least largest error any curve inside them can guarantee (half their widest).
+      double bound_half = 0;
+      int bound_inside = 0;
       double std_err = 0, inv_err = 0;
       for (const auto& p : standard) {
         const double truth = true_percent_finer(sample.classes, p.diameter);
+        const double lo = curve.bound_lower_at(p.diameter), hi = curve.bound_upper_at(p.diameter);
+        bound_half = std::max(bound_half, 0.5 * (hi - lo));
+        bound_inside += truth >= lo - 1e-9 && truth <= hi + 1e-9;
         std_err = std::max(std_err, std::abs(p.percent_finer - truth));
         if (std::getenv("SEDEM_INVERT_DEBUG"))
-          std::printf("  d %.2f truth %.2f std %.2f inv %.2f\n", p.diameter * 1e6, truth,
-                      p.percent_finer, curve.at(p.diameter));
+          std::printf("  d %.2f truth %.2f std %.2f inv %.2f bounds %.2f..%.2f\n", p.diameter * 1e6,
+                      truth, p.percent_finer, curve.at(p.diameter), lo, hi);
         inv_err = std::max(inv_err, std::abs(curve.at(p.diameter) - truth));
       }
       // Goal: at least halve an error above 2 pp; never worse by more than 0.5 pp.
       const bool goal = std_err > 2.0 ? inv_err <= 0.5 * std_err : inv_err <= std_err + 0.5;
       // Coverage: noisy copies (an error uniform over one resolution step before rounding).
-      double cover = std::nan(""), width = std::nan("");
+      double cover = std::nan(""), width = std::nan(""), bound_cover = std::nan("");
       if (copies > 0) {
         std::mt19937_64 rng(7);
         const double res = invert::default_resolution(test);
@@ -154,7 +166,7 @@ int main(int argc, char** argv) {
         o.bootstrap = replicas;
         o.refine = refine;
         o.tau = tau;
-        int inside = 0, total = 0;
+        int inside = 0, total = 0, inside_bounds = 0;
         double width_sum = 0;
         for (int k = 0; k < copies; ++k) {
           std::vector<double> shift;
@@ -167,20 +179,26 @@ int main(int argc, char** argv) {
             if (truth <= 0.5 || truth >= 99.5) continue;
             ++total;
             inside += truth >= noisy.lower_at(d) && truth <= noisy.upper_at(d);
+            inside_bounds += truth >= noisy.bound_lower_at(d) && truth <= noisy.bound_upper_at(d);
             width_sum += noisy.upper_at(d) - noisy.lower_at(d);
           }
         }
         cover = total ? double(inside) / total : std::nan("");
+        bound_cover = total ? double(inside_bounds) / total : std::nan("");
         width = total ? width_sum / total : std::nan("");
       }
-      std::printf("%-8s %-10s %-9s %3zu %9.2f %9.2f %5s %9.3g %8.2f %8.3f %8.2f %8.2f\n",
-                  scene.name.c_str(), name.c_str(), source.c_str(), data.size(), std_err, inv_err,
-                  goal ? "yes" : "no", curve.lambda, curve.chi2, cover, width, seconds);
+      const std::string inside =
+          std::to_string(bound_inside) + "/" + std::to_string(standard.size());
+      std::printf(
+          "%-8s %-10s %-9s %3zu %9.2f %9.2f %5s %9.3g %8.2f %8.3f %8.2f %6s %8.2f %8.3f %8.2f\n",
+          scene.name.c_str(), name.c_str(), source.c_str(), data.size(), std_err, inv_err,
+          goal ? "yes" : "no", curve.lambda, curve.chi2, cover, width, inside.c_str(), bound_half,
+          bound_cover, seconds);
       std::fflush(stdout);
       csv << scene.name << ',' << name << ',' << source << ',' << data.size() << ',' << std_err
           << ',' << inv_err << ',' << (goal ? "yes" : "no") << ',' << curve.lambda << ','
-          << curve.chi2 << ',' << curve.chi2_target << ',' << cover << ',' << width << ','
-          << seconds << '\n';
+          << curve.chi2 << ',' << curve.chi2_target << ',' << cover << ',' << width << ',' << inside
+          << ',' << bound_half << ',' << bound_cover << ',' << seconds << '\n';
     }
   }
   return 0;

@@ -30,6 +30,14 @@ Figure invert_figure(const InvertFigureInput& in) {
                 std::pow(10.0, std::ceil(std::log10(hi))), true);
   plot.y = axis("percent finer", "%", 0.0, 110.0);
   const std::array<unsigned char, 3> black{0, 0, 0};
+  if (!in.bound_lower.empty()) {
+    // Behind everything: where the readings leave the curve open, the prior chose it.
+    PlotSeries allowed("readings allow", micrometres(in.bound_diameter_m), in.bound_upper,
+                       SeriesStyle::band);
+    allowed.y_low = in.bound_lower;
+    allowed.color = std::array<unsigned char, 3>{200, 200, 200};
+    plot.series.push_back(std::move(allowed));
+  }
   if (!in.true_diameter_m.empty()) {
     PlotSeries truth("true", micrometres(in.true_diameter_m), in.true_percent_finer);
     truth.color = black;

@@ -15,7 +15,9 @@ struct InvertFigureInput {
   std::vector<double> diameter_m;  // the inverted curve's nodes
   std::vector<double> percent_finer, lower, upper;
   std::string band_name = "band";  // e.g. "90 % band"
-  std::string standard_name;       // e.g. "ASTM D422"
+  // What the readings alone allow (InvertedCurve::bound_*); empty: none.
+  std::vector<double> bound_diameter_m, bound_lower, bound_upper;
+  std::string standard_name;  // e.g. "ASTM D422"
   std::vector<double> standard_diameter_m, standard_percent_finer;
   std::vector<double> true_diameter_m, true_percent_finer;  // empty: unknown
 };

@@ -19,7 +19,7 @@ build_only=false
 
 packages=(
   build-essential cmake ninja-build pkg-config git
-  libeigen3-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
+  libeigen3-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev coinor-libclp-dev
   libvtk9-dev qt6-base-dev
   libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev libglew-dev
   libgtest-dev googletest clang-format

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/invert/nnls.h"
+#include "core/invert/reading_bounds.h"
 
 namespace sedem::invert {
 
@@ -208,6 +209,18 @@ double InvertedCurve::upper_at(double d) const {
   return interpolate(diameter, upper.empty() ? percent_finer : upper, d);
 }
 
+double InvertedCurve::bound_lower_at(double d) const {
+  if (bound_lower.empty()) return std::nan("");
+  const auto it = std::upper_bound(bound_diameter.begin(), bound_diameter.end(), d);
+  return it == bound_diameter.begin() ? 0.0
+                                      : bound_lower[std::size_t(it - bound_diameter.begin()) - 1];
+}
+double InvertedCurve::bound_upper_at(double d) const {
+  if (bound_upper.empty()) return std::nan("");
+  const auto it = std::lower_bound(bound_diameter.begin(), bound_diameter.end(), d);
+  return it == bound_diameter.end() ? 100.0 : bound_upper[std::size_t(it - bound_diameter.begin())];
+}
+
 InvalidInversionInput::InvalidInversionInput(std::size_t row, const std::string& field,
                                              double value, const std::string& why)
     : std::invalid_argument(describe(row, field, value, why)), row_(row) {}
@@ -328,6 +341,48 @@ InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<M
   out.diameter = model.grid().nodes;
   out.shares.assign(x.data(), x.data() + x.size());
   out.percent_finer = curve_of(x);
+
+  // The readings' own bounds, on a grid kBoundSplit times finer (the fit's own grid holds
+  // every curve linear in log d between its nodes, which is itself a prior: a knee inside a
+  // bin would be outside its bounds), with the same size classes. The tolerance is the one
+  // the lambda rule keeps the fit within, half a resolution step (rounding) plus the least
+  // smoothing's misfit (the grid's own), plus what the finer grid changes in the fit's
+  // readings, so that the fit is always inside them.
+  if (options.bounds) {
+    constexpr int kBoundSplit = 4;
+    const Grid& coarse = model.grid();
+    Grid fine;
+    for (std::size_t k = 0; k + 1 < coarse.nodes.size(); ++k)
+      for (int s = 0; s < kBoundSplit; ++s)
+        fine.nodes.push_back(coarse.nodes[k] * std::pow(coarse.nodes[k + 1] / coarse.nodes[k],
+                                                        double(s) / kBoundSplit));
+    fine.nodes.push_back(coarse.nodes.back());
+    Eigen::VectorXd x_fine = Eigen::VectorXd::Zero(Eigen::Index(fine.bins()));
+    x_fine(0) = x(0);
+    for (Eigen::Index k = 1; k + 1 < x.size(); ++k)
+      x_fine.segment((k - 1) * kBoundSplit + 1, kBoundSplit).setConstant(x(k) / kBoundSplit);
+    x_fine(x_fine.size() - 1) = x(x.size() - 1);
+    ForwardModel fine_model(scene, test, fine, times,
+                            std::max(1, options.subclasses / kBoundSplit));
+    fine_model.hold_speeds_at(x_fine);
+    const Eigen::MatrixXd j_fine = fine_model.jacobian(x_fine);
+    const Eigen::VectorXd read_fine = fine_model.readings(x_fine);
+    Eigen::VectorXd tolerance = choice.floor_residual.cwiseAbs().array() + 0.5 * resolution +
+                                (read_fine - fitted).cwiseAbs().array();
+    // The fit meets the tolerance up to the NNLS's rounding: widen by a hair so the linear
+    // programme is feasible whenever the fit is. Its shares sum to 1 within the weight of
+    // that row (about 1e-3); the bounds keep the fit's own sum so that it is one of their
+    // curves.
+    tolerance.array() += 1e-9 * (measured.cwiseAbs().maxCoeff() + resolution);
+    const auto bounds =
+        reading_bounds(j_fine, read_fine - j_fine * x_fine, measured, tolerance, x.sum());
+    if (bounds.feasible) {
+      out.bound_diameter = fine.nodes;
+      out.bound_lower = bounds.lower;
+      out.bound_upper = bounds.upper;
+    }
+    out.bound_tolerance.assign(tolerance.data(), tolerance.data() + tolerance.size());
+  }
 
   // The band: randomize-then-optimize sampling of the posterior that the objective stands
   // for (Gaussian reading noise of sigma, a Gaussian smoothness prior of weight lambda,

@@ -24,6 +24,7 @@ struct InversionOptions {
   double tau = 0.7;         // discrepancy factor: chi^2 target (tau sqrt(N) + sqrt(floor))^2
   std::uint64_t seed = 1;   // of the bootstrap's noise
   int max_iterations = 12;  // Gauss-Newton steps (the hydrometer)
+  bool bounds = true;       // the readings' strict bounds (InvertedCurve::bound_*)
 };
 
 // The default reading resolutions: 152H 1 g/L (its graduation), the sphere's balance 1 mg,
@@ -51,6 +52,12 @@ struct InvertedCurve {
   double coverage = 0;
   int replicas = 0;
   double prior_scale = 1;  // gamma: the band's prior spread, calibrated to the fit
+  // The readings' strict bounds (reading_bounds), % finer at bound_diameter, the grid's nodes
+  // each split in four (every fourth is a node of the curve): any curve of that finer grid
+  // whose readings, linearised at the fit, stay within bound_tolerance of the measured ones.
+  // Empty if the linear programme failed.
+  std::vector<double> bound_diameter, bound_lower, bound_upper;
+  std::vector<double> bound_tolerance;        // per reading, in its unit
   double resolved_min = 0, resolved_max = 0;  // reading_diameter's extremes
   std::vector<double> reading_diameter;  // where each reading pins the curve, m (model_diameter)
 
@@ -59,6 +66,11 @@ struct InvertedCurve {
   double at(double diameter) const;
   double lower_at(double diameter) const;
   double upper_at(double diameter) const;
+  // The bounds at any diameter, taken conservatively from the nearest bound nodes (the lower
+  // at the node below, the upper at the node above: every curve is monotone); NaN without
+  // bounds.
+  double bound_lower_at(double diameter) const;
+  double bound_upper_at(double diameter) const;
 };
 
 // Invalid input for the inversion: names the row (0-based, or kNoRow), the field, the value

@@ -24,6 +24,22 @@ inline Sample classes_only(const Scene& scene) {
   return s;
 }
 
+// A sample whose true curve has a knee, as the paper's sample 4 (92 % between 25 and 35 um).
+inline Scene knee_scene() {
+  Scene s;
+  s.sample.size_count = 220;
+  s.sample.grading.diameters = {2.5e-6, 25e-6, 30e-6, 35e-6, 70e-6};
+  s.sample.grading.percent_finer = {0, 5, 50, 97, 100};
+  return s;
+}
+
+// A log-uniform sample, 2.5-70 um: percent finer linear in log d.
+inline Scene log_uniform_scene() {
+  Scene s;
+  s.sample.size_count = 60;
+  return s;
+}
+
 inline double round_to(double v, double step) {
   return std::round(v / step) * step;
 }

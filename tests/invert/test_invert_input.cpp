@@ -134,6 +134,29 @@ TEST(InvertCommand, ClayLoamRecordWritesCurveBandAndFigure) {
   const auto resolved = summary.at("resolved_diameter_m");
   EXPECT_NEAR(resolved.at(0).get<double>(), 3.80e-6, 0.01e-6);
   EXPECT_NEAR(resolved.at(1).get<double>(), 55.1e-6, 0.1e-6);
+  // What the readings allow holds the inverted curve at every node, and is widest inside the
+  // resolved range where it says so.
+  std::ifstream curve(dir / "inverted_curve.csv");
+  std::getline(curve, header);
+  EXPECT_EQ(header,
+            "diameter_m,percent_finer,percent_finer_low,percent_finer_high,readings_allow_low,"
+            "readings_allow_high");
+  int nodes = 0;
+  for (std::string line; std::getline(curve, line); ++nodes) {
+    std::vector<double> v;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) v.push_back(std::stod(cell));
+    ASSERT_EQ(v.size(), 6u) << line;
+    EXPECT_LE(v[4], v[1] + 1e-6) << line;
+    EXPECT_GE(v[5], v[1] - 1e-6) << line;
+  }
+  EXPECT_GT(nodes, 7);
+  const auto allow = summary.at("readings_allow");
+  const double widest_at = allow.at("at_diameter_m").get<double>();
+  EXPECT_GT(allow.at("widest_pp").get<double>(), 0.0);
+  EXPECT_GE(widest_at, resolved.at(0).get<double>());
+  EXPECT_LE(widest_at, resolved.at(1).get<double>());
+  EXPECT_EQ(allow.at("tolerance").size(), 7u);
 }
 
 // A simulated run inverted from its folder: the readings rounded as a laboratory records
@@ -172,7 +195,10 @@ TEST(InvertCommand, RunFolderAgainstItsTrueCurve) {
   std::ifstream figure(dir / "invert.csv");  // the figure draws the true curve too
   std::string columns;
   std::getline(figure, columns);
-  EXPECT_EQ(columns.rfind("true:diameter_um,true:percent_finer,inverted:", 0), 0u) << columns;
+  EXPECT_NE(columns.find("true:diameter_um,true:percent_finer,inverted:"), std::string::npos)
+      << columns;
+  EXPECT_EQ(columns.rfind("readings allow:diameter_um,readings allow:percent_finer_low,", 0), 0u)
+      << columns;
 
   EXPECT_EQ(test::run_sedem("invert --test buoyancy --out " + dir.string()).status, 1);
   EXPECT_EQ(

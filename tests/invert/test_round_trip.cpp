@@ -16,6 +16,8 @@ namespace sedem::invert {
 namespace {
 
 using test::classes_only;
+using test::knee_scene;
+using test::log_uniform_scene;
 using test::recorded;
 using test::simulate_test;
 
@@ -44,30 +46,16 @@ RoundTrip round_trip(const Scene& scene, Test test, const InversionOptions& opti
   return r;
 }
 
-// A sample whose true curve has a knee, as the paper's sample 4 (92 % between 25 and 35 um).
-Scene steep_scene() {
-  Scene s;
-  s.sample.size_count = 220;
-  s.sample.grading.diameters = {2.5e-6, 25e-6, 30e-6, 35e-6, 70e-6};
-  s.sample.grading.percent_finer = {0, 5, 50, 97, 100};
-  return s;
-}
-
-Scene smooth_scene() {
-  Scene s;
-  s.sample.size_count = 60;  // log-uniform 2.5-70 um: percent finer linear in log d
-  return s;
-}
-
 InversionOptions quick() {
   InversionOptions o;
   o.bootstrap = 0;
+  o.bounds = false;
   return o;
 }
 
 TEST(RoundTrip, SmoothCurveEveryTest) {
   for (invert::Test t : {invert::Test::hydrometer, invert::Test::buoyancy, invert::Test::pipette}) {
-    const auto r = round_trip(smooth_scene(), t, quick());
+    const auto r = round_trip(log_uniform_scene(), t, quick());
     EXPECT_LE(r.inverted, std::max(2.0, r.standard + 0.5)) << test_name(t);
     EXPECT_LE(r.curve.chi2, r.curve.chi2_target * 1.05 + 1e-9) << test_name(t);
   }
@@ -81,7 +69,7 @@ TEST(RoundTrip, SmoothCurveEveryTest) {
 // (docs/invert.md, "Measured").
 TEST(RoundTrip, SteepCurveEveryTest) {
   for (invert::Test t : {invert::Test::hydrometer, invert::Test::buoyancy, invert::Test::pipette}) {
-    const auto r = round_trip(steep_scene(), t, quick());
+    const auto r = round_trip(knee_scene(), t, quick());
     ASSERT_GT(r.standard, 2.0) << test_name(t);
     if (t == invert::Test::hydrometer)
       EXPECT_LE(r.inverted, 0.5 * r.standard) << test_name(t);
@@ -94,7 +82,7 @@ TEST(RoundTrip, SteepCurveEveryTest) {
 // reading may miss its measured one by more than that beyond what the least smoothing misses
 // it by (the model's floor: the grid's curves are not the sample's 220 classes).
 TEST(RoundTrip, NoReadingMissesByMoreThanHalfAStep) {
-  for (const Scene& scene : {smooth_scene(), steep_scene()})
+  for (const Scene& scene : {log_uniform_scene(), knee_scene()})
     for (invert::Test t :
          {invert::Test::hydrometer, invert::Test::buoyancy, invert::Test::pipette}) {
       const auto r = round_trip(scene, t, quick());
@@ -110,7 +98,7 @@ TEST(RoundTrip, NoReadingMissesByMoreThanHalfAStep) {
 // with the scene's Di Felice drag in the voidage around it, a grain is slower than in clear
 // fluid, so the pinned diameter is larger than clear fluid's.
 TEST(Pins, FollowTheHinderedFronts) {
-  Scene hindered = steep_scene();
+  Scene hindered = knee_scene();
   hindered.forces.drag = "di_felice";
   hindered.instruments.reference_settling = "local_voidage";
   Scene free = hindered;
@@ -137,6 +125,7 @@ double coverage(const Scene& scene, invert::Test test, int copies, int replicas)
   std::uniform_real_distribution<double> noise(-0.5 * res, 0.5 * res);
   InversionOptions o;
   o.bootstrap = replicas;
+  o.bounds = false;  // the band only
   int inside = 0, total = 0;
   for (int c = 0; c < copies; ++c) {
     std::vector<double> shift;
@@ -165,11 +154,11 @@ double coverage(const Scene& scene, invert::Test test, int copies, int replicas)
 // roughness, at 0.77 and 0.75 (the knee sits where the readings say nothing).
 TEST(Band, CoversTheKneeForTheSphereAndThePipette) {
   for (invert::Test t : {invert::Test::buoyancy, invert::Test::pipette})
-    EXPECT_GE(coverage(steep_scene(), t, 30, 60), 0.7) << test_name(t);
+    EXPECT_GE(coverage(knee_scene(), t, 30, 60), 0.7) << test_name(t);
 }
 
 TEST(Band, CoversTheTruthOverNoisyCopies) {
-  Scene s = smooth_scene();
+  Scene s = log_uniform_scene();
   s.sample.size_count = 220;
   // 0.97 with the smoothing's bias and the calibrated prior in the band; 0.90 without the
   // calibration, 0.84 with the noise alone.
