@@ -180,16 +180,7 @@ int run_invert(const InvertOptions& o) {
     }
     if (!csv) return exit_code::io_failure;
   }
-  // Where the readings leave the curve most open, among the nodes they resolve.
-  double open_width = 0, open_at = 0;
-  for (std::size_t k = 0; k < curve.bound_diameter.size(); ++k) {
-    const double d = curve.bound_diameter[k];
-    if (d < curve.resolved_min || d > curve.resolved_max) continue;
-    if (curve.bound_upper[k] - curve.bound_lower[k] > open_width) {
-      open_width = curve.bound_upper[k] - curve.bound_lower[k];
-      open_at = d;
-    }
-  }
+  const auto open = curve.widest_open();
   // Against the run's true curve: the largest errors at the standard reduction's diameters.
   double inverted_error = 0, standard_error = 0;
   for (const auto& p : truth.empty() ? std::vector<GradingPoint>{} : standard) {
@@ -216,8 +207,8 @@ int run_invert(const InvertOptions& o) {
     j["resolved_diameter_m"] = {curve.resolved_min, curve.resolved_max};
     j["standard_reduction"] = standard_name;
     if (!curve.bound_lower.empty())
-      j["readings_allow"] = {{"widest_pp", open_width},
-                             {"at_diameter_m", open_at},
+      j["readings_allow"] = {{"widest_pp", open.width},
+                             {"at_diameter_m", open.diameter},
                              {"tolerance", curve.bound_tolerance}};
     if (!truth.empty())
       j["true_curve_error_pp"] = {{"inverted", inverted_error}, {"standard", standard_error}};
@@ -258,11 +249,12 @@ int run_invert(const InvertOptions& o) {
     std::printf("lambda %.3g, chi2 %.2f (target %.2f, floor %.2f), %d replicas; wrote %s\n",
                 curve.lambda, curve.chi2, curve.chi2_target, curve.chi2_floor, curve.replicas,
                 o.out.c_str());
-    if (open_width > 0)
+    if (open.width > 0)
       std::printf(
           "the readings allow %.1f to %.1f %% finer at %.1f um (their widest, within the range "
           "they resolve): there the curve is the smoothing's choice\n",
-          curve.bound_lower_at(open_at), curve.bound_upper_at(open_at), open_at * 1e6);
+          curve.bound_lower_at(open.diameter), curve.bound_upper_at(open.diameter),
+          open.diameter * 1e6);
     if (!truth.empty())
       std::printf(
           "against the run's true curve: inverted %.2f pp, %s %.2f pp (largest, at the "

@@ -69,6 +69,26 @@ Grid reading_grid(std::vector<double> diameters, int refine) {
   return g;
 }
 
+Grid split_grid(const Grid& grid, int parts) {
+  Grid g;
+  for (std::size_t k = 0; k + 1 < grid.nodes.size(); ++k)
+    for (int s = 0; s < parts; ++s)
+      g.nodes.push_back(grid.nodes[k] *
+                        std::pow(grid.nodes[k + 1] / grid.nodes[k], double(s) / parts));
+  if (!grid.nodes.empty()) g.nodes.push_back(grid.nodes.back());
+  return g;
+}
+
+Eigen::VectorXd split_shares(const Eigen::VectorXd& x, int parts) {
+  if (x.size() < 2) return x;
+  Eigen::VectorXd out(1 + (x.size() - 2) * parts + 1);
+  out(0) = x(0);
+  for (Eigen::Index k = 1; k + 1 < x.size(); ++k)
+    out.segment((k - 1) * parts + 1, parts).setConstant(x(k) / parts);
+  out(out.size() - 1) = x(x.size() - 1);
+  return out;
+}
+
 std::vector<double> bin_widths(const Grid& grid) {
   const auto& d = grid.nodes;
   std::vector<double> w{std::log(10.0)};

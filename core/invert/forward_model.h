@@ -41,6 +41,12 @@ Grid log_grid(double smallest, double largest, std::size_t count);
 // instrument by the first reading).
 Grid reading_grid(std::vector<double> diameters, int refine);
 
+// Each interval between the grid's nodes cut into `parts` even in log d (the grid's nodes stay,
+// node k at k * parts), and shares on it that give the same curve: each interior bin's share
+// spread evenly over its parts, the open-ended bins as they are.
+Grid split_grid(const Grid& grid, int parts);
+Eigen::VectorXd split_shares(const Eigen::VectorXd& x, int parts);
+
 // The widths of the bins in ln d: ln 10 for the finest, ln 4 for the coarsest.
 std::vector<double> bin_widths(const Grid& grid);
 

@@ -220,6 +220,15 @@ double InvertedCurve::bound_upper_at(double d) const {
   const auto it = std::lower_bound(bound_diameter.begin(), bound_diameter.end(), d);
   return it == bound_diameter.end() ? 100.0 : bound_upper[std::size_t(it - bound_diameter.begin())];
 }
+InvertedCurve::OpenInterval InvertedCurve::widest_open() const {
+  OpenInterval w;
+  for (std::size_t k = 0; k < bound_diameter.size(); ++k) {
+    const double d = bound_diameter[k];
+    if (d < resolved_min || d > resolved_max) continue;
+    if (bound_upper[k] - bound_lower[k] > w.width) w = {bound_upper[k] - bound_lower[k], d};
+  }
+  return w;
+}
 
 InvalidInversionInput::InvalidInversionInput(std::size_t row, const std::string& field,
                                              double value, const std::string& why)
@@ -350,18 +359,8 @@ InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<M
   // readings, so that the fit is always inside them.
   if (options.bounds) {
     constexpr int kBoundSplit = 4;
-    const Grid& coarse = model.grid();
-    Grid fine;
-    for (std::size_t k = 0; k + 1 < coarse.nodes.size(); ++k)
-      for (int s = 0; s < kBoundSplit; ++s)
-        fine.nodes.push_back(coarse.nodes[k] * std::pow(coarse.nodes[k + 1] / coarse.nodes[k],
-                                                        double(s) / kBoundSplit));
-    fine.nodes.push_back(coarse.nodes.back());
-    Eigen::VectorXd x_fine = Eigen::VectorXd::Zero(Eigen::Index(fine.bins()));
-    x_fine(0) = x(0);
-    for (Eigen::Index k = 1; k + 1 < x.size(); ++k)
-      x_fine.segment((k - 1) * kBoundSplit + 1, kBoundSplit).setConstant(x(k) / kBoundSplit);
-    x_fine(x_fine.size() - 1) = x(x.size() - 1);
+    const Grid fine = split_grid(model.grid(), kBoundSplit);
+    const Eigen::VectorXd x_fine = split_shares(x, kBoundSplit);
     ForwardModel fine_model(scene, test, fine, times,
                             std::max(1, options.subclasses / kBoundSplit));
     fine_model.hold_speeds_at(x_fine);

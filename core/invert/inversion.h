@@ -71,6 +71,13 @@ struct InvertedCurve {
   // bounds.
   double bound_lower_at(double diameter) const;
   double bound_upper_at(double diameter) const;
+  // The bound node within the resolved diameters where the bounds are furthest apart (width 0
+  // without bounds): where the curve is most the smoothing's choice.
+  struct OpenInterval {
+    double width = 0;     // pp
+    double diameter = 0;  // m
+  };
+  OpenInterval widest_open() const;
 };
 
 // Invalid input for the inversion: names the row (0-based, or kNoRow), the field, the value
