@@ -154,6 +154,11 @@ int main(int argc, char** argv) {
                       truth, p.percent_finer, curve.at(p.diameter), lo, hi);
         inv_err = std::max(inv_err, std::abs(curve.at(p.diameter) - truth));
       }
+      if (std::getenv("SEDEM_INVERT_DEBUG"))  // the bounds at their own nodes, exact there
+        for (std::size_t k = 0; k < curve.bound_diameter.size(); ++k)
+          std::printf("  bound node %.3f um: %.2f..%.2f, truth %.2f\n",
+                      curve.bound_diameter[k] * 1e6, curve.bound_lower[k], curve.bound_upper[k],
+                      true_percent_finer(sample.classes, curve.bound_diameter[k]));
       // Goal: at least halve an error above 2 pp; never worse by more than 0.5 pp.
       const bool goal = std_err > 2.0 ? inv_err <= 0.5 * std_err : inv_err <= std_err + 0.5;
       // Coverage: noisy copies (an error uniform over one resolution step before rounding).
