@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/batch_command.h"
+#include "app/design_command.h"
 #include "app/bench_command.h"
 #include "app/exit_codes.h"
 #include "app/invert_command.h"
@@ -165,6 +166,27 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   invert_cmd->add_flag("-q,--quiet", invert_options.quiet, "Print only warnings and errors");
 
+  DesignCommandOptions design_options;
+  auto* design_cmd = cli.add_subcommand(
+      "design",
+      "Design a test's reading schedule: the times (and depth) whose curve is closest to the "
+      "scene's true curve, beside the standard's, from the reference solution and a DEM run");
+  design_cmd->add_option("scene", design_options.scene, "Scene file (TOML)")->required();
+  design_cmd->add_option("--test", design_options.test, "hydrometer, buoyancy or pipette")
+      ->required();
+  design_cmd->add_option("--readings", design_options.readings,
+                         "Readings of the designed schedule (default: the standard's count)");
+  design_cmd->add_option("--out", design_options.out,
+                         "Output folder (default out/design/<scene>_<test>)");
+  design_cmd->add_option("--set", design_options.overrides, "Override a scene key");
+  design_cmd->add_option("--dem-count", design_options.dem_count,
+                         "Particles of the confirming DEM run (default: the scene's; 0: none)");
+  design_cmd
+      ->add_option("--sizes", design_options.sizes,
+                   "Sizes the grading curve is cut into for the reference and the DEM run")
+      ->capture_default_str();
+  design_cmd->add_flag("-q,--quiet", design_options.quiet, "Print only warnings and errors");
+
   BenchOptions bench_options;
   auto* bench_cmd = cli.add_subcommand(
       "bench",
@@ -208,6 +230,7 @@ int main(int argc, char** argv) {
     if (render_cmd->parsed()) return render_runs(render_options);
     if (reduce_cmd->parsed()) return reduce(reduce_options);
     if (invert_cmd->parsed()) return invert(invert_options);
+    if (design_cmd->parsed()) return design(design_options);
   } catch (const std::bad_alloc&) {
     // Out of memory anywhere a command did not handle it: a message, never an abort.
     std::fputs("sedem: out of memory\n", stderr);
