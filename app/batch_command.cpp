@@ -19,6 +19,7 @@
 #include "app/exit_codes.h"
 #include "app/run_command.h"
 #include "app/run_folder.h"
+#include "app/seed_figure.h"
 #include "app/stop_signals.h"
 #include "render/plot.h"
 
@@ -172,6 +173,7 @@ void write_summaries(const std::vector<BatchRun>& runs, const std::string& key,
   if (options.seeds.value_or(0) < 2) return;
   const auto groups = seed_groups(runs, out_dir);
   write_summary_stats_csv(groups, key, out_dir);
+  write_seed_granulometry(groups, out_dir);
   if (!options.quiet) {
     const long long first = options.seed0.value_or(1);
     std::printf("sedem: seeds %lld to %lld; mean \u00b1 half-width of its 95 %% interval\n", first,

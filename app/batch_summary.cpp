@@ -59,10 +59,10 @@ void add_figures(SeedGroup& group, const fs::path& out_dir) {
   std::vector<nlohmann::json> complete;
   for (const auto& r : group.runs) {
     auto record = read_run_record(out_dir / r.folder);
-    if (!record.is_null() && record.value("status", "") == "complete")
-      complete.push_back(std::move(record));
+    if (record.is_null() || record.value("status", "") != "complete") continue;
+    complete.push_back(std::move(record));
+    group.complete.push_back(r.folder);
   }
-  group.complete = complete.size();
   for (const auto& test : batch_tests())
     for (const auto& figure : kFigures) {
       std::vector<double> values;
@@ -145,7 +145,7 @@ void write_summary_stats_csv(const std::vector<SeedGroup>& groups, const std::st
     for (const auto& g : groups) {
       out << csv_field(g.scene);
       if (!sweep_key.empty()) out << ',' << csv_field(g.value);
-      out << ',' << g.complete;
+      out << ',' << g.complete.size();
       for (const auto& [name, i] : g.figures)
         out << ',' << exact(i.mean) << ',' << exact(i.sd) << ',' << exact(i.low) << ','
             << exact(i.high);
@@ -156,7 +156,7 @@ void write_summary_stats_csv(const std::vector<SeedGroup>& groups, const std::st
 
 void print_summary_stats(const std::vector<SeedGroup>& groups, std::FILE* out) {
   for (const auto& g : groups) {
-    std::fprintf(out, "  %s: %zu of %zu runs complete\n", g.label.c_str(), g.complete,
+    std::fprintf(out, "  %s: %zu of %zu runs complete\n", g.label.c_str(), g.complete.size(),
                  g.runs.size());
     std::fprintf(out, "    %-12s %16s %16s\n", "test", "error (pp)", "bias (pp)");
     for (std::size_t k = 0; k < batch_tests().size(); ++k) {

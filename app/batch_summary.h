@@ -34,7 +34,7 @@ struct SeedGroup {
   std::string label;  // its folder name without the seed: "demo", "demo__key=value"
   std::string value;  // the swept value, empty without a sweep
   std::vector<BatchRun> runs;
-  std::size_t complete = 0;  // runs whose run.json says "complete"
+  std::vector<std::string> complete;  // folders of the runs whose run.json says "complete"
   // "<test>_error_pp" and "<test>_bias_pp" over the complete runs that have that result.
   std::vector<std::pair<std::string, Interval>> figures;
 };

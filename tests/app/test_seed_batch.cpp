@@ -74,6 +74,29 @@ fs::path fresh(const std::string& name) {
   return kOut / name;
 }
 
+// summary_granulometry.csv's hydrometer curve (one reading) is the mean of the runs' DEM
+// readings in their granulometry.csv, and its band the interval of that mean.
+void expect_mean_curve(const fs::path& out, int seeds) {
+  ASSERT_TRUE(fs::exists(out / "summary_granulometry.png"));
+  std::vector<double> finer, diameter;
+  for (int k = 1; k <= seeds; ++k)
+    for (const auto& row :
+         read_rows(out / ("demo__seed=" + std::to_string(k)) / "granulometry.csv"))
+      if (row.at("test") == "hydrometer" && row.at("source") == "dem") {
+        finer.push_back(cell(row, "percent_finer"));
+        diameter.push_back(1e6 * cell(row, "diameter_m"));
+      }
+  ASSERT_EQ(finer.size(), std::size_t(seeds));
+  const Interval expected = mean_interval(finer);
+  const auto figure = read_rows(out / "summary_granulometry.csv");
+  ASSERT_FALSE(figure.empty());
+  const std::string mean = "hydrometer (mean of " + std::to_string(seeds) + "):";
+  EXPECT_NEAR(cell(figure[0], mean + "percent_finer"), expected.mean, 1e-6);
+  EXPECT_NEAR(cell(figure[0], mean + "diameter_um"), mean_interval(diameter).mean, 1e-5);
+  EXPECT_NEAR(cell(figure[0], "hydrometer 95 % band:percent_finer_low"), expected.low, 1e-6);
+  EXPECT_NEAR(cell(figure[0], "hydrometer 95 % band:percent_finer_high"), expected.high, 1e-6);
+}
+
 TEST(SeedBatch, ThreeSeedsGiveThreeRunsAndTheirStatistics) {
   const fs::path out = fresh("three");
   const auto r =
@@ -124,6 +147,7 @@ TEST(SeedBatch, ThreeSeedsGiveThreeRunsAndTheirStatistics) {
   EXPECT_GT(cell(stats[0], "hydrometer_error_pp_sd"), 0);
   // Every test reads at least once in 20 s: all six figures have their statistics.
   EXPECT_EQ(compared, 6);
+  expect_mean_curve(out, 3);
 }
 
 TEST(SeedBatch, SeedsFollowTheSweptValuesAndTheFirstSeed) {
@@ -153,6 +177,7 @@ TEST(SeedBatch, OneSeedWritesNoStatistics) {
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(read_json(out / "demo__seed=5/run.json")["seed"].get<long long>(), 5);
   EXPECT_FALSE(fs::exists(out / "summary_stats.csv"));
+  EXPECT_FALSE(fs::exists(out / "summary_granulometry.png"));
   EXPECT_EQ(read_rows(out / "summary.csv").at(0).at("seed"), "5");
 }
 
