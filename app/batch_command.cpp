@@ -6,17 +6,20 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 #include <stdexcept>
 #include <thread>
 
+#include "app/batch_summary.h"
 #include "app/exit_codes.h"
 #include "app/run_command.h"
 #include "app/run_folder.h"
+#include "app/seed_figure.h"
 #include "app/stop_signals.h"
 #include "render/plot.h"
 
@@ -27,27 +30,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::vector<std::string> kTests{"hydrometer", "buoyancy", "pipette"};
-
-nlohmann::json read_record(const fs::path& dir) {
-  std::ifstream in(dir / "run.json");
-  if (!in) return nullptr;
-  auto j = nlohmann::json::parse(in, nullptr, false);
-  return j.is_discarded() ? nullptr : j;
-}
-
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + '"';
-}
-
-std::string number(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", x);
-  return text;
-}
+// A bound on a batch that a typo (--seeds 1000000) would make run for days.
+constexpr int kMostSeeds = 10000;
 
 bool has_override(const std::vector<std::string>& overrides, const std::string& key) {
   return std::any_of(overrides.begin(), overrides.end(),
@@ -82,17 +66,17 @@ void write_error_figure(const std::vector<BatchRun>& runs, const std::string& ke
   std::set<std::string> scenes;
   for (const auto& r : runs) scenes.insert(fs::path(r.scene).stem().string());
   for (const auto& scene : scenes)
-    for (const auto& test : kTests) {
+    for (const auto& test : batch_tests()) {
       render::PlotSeries series;
       series.name = scenes.size() > 1 ? scene + " " + test : test;
       series.style = render::SeriesStyle::line_and_points;
       for (std::size_t i = 0; i < runs.size(); ++i) {
         if (fs::path(runs[i].scene).stem().string() != scene) continue;
-        const auto record = read_record(out_dir / runs[i].folder);
-        if (record.is_null() || !record.contains("results") || !record["results"].contains(test))
-          continue;
+        const double error =
+            run_figure(read_run_record(out_dir / runs[i].folder), test, "error_pp");
+        if (std::isnan(error)) continue;
         series.x.push_back(xs[i]);
-        series.y.push_back(record["results"][test].value("error_pp", 0.0));
+        series.y.push_back(error);
       }
       if (!series.x.empty()) plot.series.push_back(std::move(series));
     }
@@ -163,6 +147,50 @@ int run_in_processes(const std::vector<BatchRun>& runs, const BatchOptions& opti
   return worst;
 }
 
+// The runs one after another in this process.
+int run_in_turn(const std::vector<BatchRun>& runs, const BatchOptions& options) {
+  int worst = exit_code::ok;
+  for (const auto& r : runs) {
+    RunOptions run_options;
+    run_options.scene = r.scene;
+    run_options.quiet = options.quiet;
+    run_options.overwrite = options.overwrite;
+    run_options.overrides = r.overrides;
+    run_options.out_dir = (fs::path(options.out_dir) / r.folder).string();
+    const int status = run(run_options);
+    if (status != exit_code::ok) worst = status;
+    if (stop_requested()) return exit_code::interrupted;
+  }
+  return worst;
+}
+
+// summary.csv, with a sweep the error figure, and from two seeds on the statistics over them.
+void write_summaries(const std::vector<BatchRun>& runs, const std::string& key,
+                     const BatchOptions& options) {
+  const fs::path out_dir = options.out_dir;
+  write_summary_csv(runs, key, out_dir);
+  if (!key.empty()) write_error_figure(runs, key, out_dir);
+  if (options.seeds.value_or(0) < 2) return;
+  const auto groups = seed_groups(runs, out_dir);
+  write_summary_stats_csv(groups, key, out_dir);
+  write_seed_granulometry(groups, out_dir);
+  if (!options.quiet) {
+    const long long first = options.seed0.value_or(1);
+    std::printf("sedem: seeds %lld to %lld; mean \u00b1 half-width of its 95 %% interval\n", first,
+                first + *options.seeds - 1);
+    print_summary_stats(groups, stdout);
+  }
+}
+
+// `name` made one safe path component, with "_2", "_3"... until no other run has it.
+std::string unique_folder(const std::string& name, std::set<std::string>& used) {
+  const std::string base = safe_folder_name(name);
+  std::string folder = base;
+  for (int k = 2; used.count(folder); ++k) folder = base + "_" + std::to_string(k);
+  used.insert(folder);
+  return folder;
+}
+
 }  // namespace
 
 std::vector<std::string> expand_sweep(const std::string& sweep) {
@@ -190,59 +218,61 @@ std::vector<BatchRun> plan_batch(const BatchOptions& options) {
   std::set<std::string> used;
   for (const auto& scene : options.scenes) {
     // Two scene files with one stem (a/demo.toml, b/demo.toml): demo, demo_2, ...
-    std::string stem = safe_folder_name(fs::path(scene).stem().string());
-    for (int k = 2; used.count(stem); ++k)
-      stem = safe_folder_name(fs::path(scene).stem().string()) + "_" + std::to_string(k);
-    used.insert(stem);
+    const std::string stem = unique_folder(fs::path(scene).stem().string(), used);
     for (const auto& variant : variants) {
       BatchRun run;
       run.scene = scene;
       run.overrides = options.overrides;
-      run.folder = stem;
+      run.group = stem;
       if (!variant.empty()) {
         run.overrides.push_back(variant);
         run.value = variant.substr(variant.find('=') + 1);
         // Two values may give one folder name once made safe ("a/b" and "a_b").
-        const std::string base = safe_folder_name(stem + "__" + variant);
-        run.folder = base;
-        for (int k = 2; used.count(run.folder); ++k) run.folder = base + "_" + std::to_string(k);
-        used.insert(run.folder);
+        run.group = unique_folder(stem + "__" + variant, used);
       }
-      runs.push_back(std::move(run));
+      run.folder = run.group;
+      if (!options.seeds) {
+        runs.push_back(std::move(run));
+        continue;
+      }
+      for (int k = 0; k < *options.seeds; ++k) {
+        BatchRun seeded = run;
+        seeded.seed = options.seed0.value_or(1) + k;
+        seeded.overrides.push_back("sample.seed=" + std::to_string(*seeded.seed));
+        seeded.folder = unique_folder(run.group + "__seed=" + std::to_string(*seeded.seed), used);
+        runs.push_back(std::move(seeded));
+      }
     }
   }
   return runs;
 }
 
-void write_summary_csv(const std::vector<BatchRun>& runs, const std::string& sweep_key,
-                       const fs::path& out_dir) {
-  std::ofstream out(out_dir / "summary.csv");
-  out << "run,scene";
-  if (!sweep_key.empty()) out << ',' << csv_field(sweep_key);
-  for (const auto& t : kTests) out << ',' << t << "_error_pp," << t << "_bias_pp";
-  out << ",wall_time_s,particle_count,status\n";
-  for (const auto& r : runs) {
-    const auto record = read_record(out_dir / r.folder);
-    out << csv_field(r.folder) << ',' << csv_field(r.scene);
-    if (!sweep_key.empty()) out << ',' << csv_field(r.value);
-    for (const auto& t : kTests) {
-      if (!record.is_null() && record.contains("results") && record["results"].contains(t))
-        out << ',' << number(record["results"][t].value("error_pp", 0.0)) << ','
-            << number(record["results"][t].value("bias_pp", 0.0));
-      else
-        out << ",,";
-    }
-    if (record.is_null())
-      out << ",,,missing\n";
-    else
-      out << ',' << number(record.value("wall_time_s", 0.0)) << ','
-          << record.value("particle_count", 0) << ',' << record.value("status", "") << '\n';
-  }
-  out.flush();
-  if (!out) throw std::runtime_error("cannot write " + (out_dir / "summary.csv").string());
+std::string seed_options_error(const BatchOptions& options) {
+  if (!options.seeds) return options.seed0 ? "--seed0 needs --seeds N" : "";
+  const int n = *options.seeds;
+  if (n < 1 || n > kMostSeeds)
+    return "--seeds " + std::to_string(n) + " is out of range; allowed: [1, " +
+           std::to_string(kMostSeeds) + "]";
+  const std::int64_t last = std::numeric_limits<std::int64_t>::max() - (n - 1);
+  const std::int64_t seed0 = options.seed0.value_or(1);
+  if (seed0 < 0 || seed0 > last)
+    return "--seed0 " + std::to_string(seed0) + " is out of range with --seeds " +
+           std::to_string(n) + "; allowed: [0, " + std::to_string(last) + "]";
+  // The seed is the one thing that differs between the runs of a group.
+  for (const auto& o : options.overrides)
+    if (o.rfind("sample.seed=", 0) == 0)
+      return "--set " + o + " cannot go with --seeds, which sets sample.seed (give --seed0)";
+  if (options.sweep.rfind("sample.seed=", 0) == 0)
+    return "--sweep " + options.sweep +
+           " cannot go with --seeds, which sets sample.seed (give --seed0)";
+  return "";
 }
 
 int batch(const BatchOptions& options) {
+  if (const std::string error = seed_options_error(options); !error.empty()) {
+    std::fprintf(stderr, "sedem: %s\n", error.c_str());
+    return exit_code::invalid_scene;
+  }
   std::vector<BatchRun> runs;
   try {
     runs = plan_batch(options);
@@ -250,31 +280,12 @@ int batch(const BatchOptions& options) {
     std::fprintf(stderr, "sedem: %s\n", e.what());
     return exit_code::usage;
   }
-  int worst = exit_code::ok;
-  if (options.jobs > 1) {
-    worst = run_in_processes(runs, options);
-  } else {
-    for (const auto& r : runs) {
-      RunOptions run_options;
-      run_options.scene = r.scene;
-      run_options.quiet = options.quiet;
-      run_options.overwrite = options.overwrite;
-      run_options.overrides = r.overrides;
-      run_options.out_dir = (fs::path(options.out_dir) / r.folder).string();
-      const int status = run(run_options);
-      if (status != exit_code::ok) worst = status;
-      if (stop_requested()) {
-        worst = exit_code::interrupted;
-        break;
-      }
-    }
-  }
+  int worst = options.jobs > 1 ? run_in_processes(runs, options) : run_in_turn(runs, options);
   const std::string key =
       options.sweep.empty() ? std::string() : options.sweep.substr(0, options.sweep.find('='));
   try {
     fs::create_directories(options.out_dir);
-    write_summary_csv(runs, key, options.out_dir);
-    if (!key.empty()) write_error_figure(runs, key, options.out_dir);
+    write_summaries(runs, key, options);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sedem: the batch summary could not be written: %s\n", e.what());
     if (worst == exit_code::ok) worst = exit_code::io_failure;

@@ -1,10 +1,10 @@
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 namespace sedem::app {
 
@@ -16,12 +16,18 @@ struct BatchOptions {
   int jobs = 1;            // runs at once, each with its share of the cores
   bool overwrite = false;  // passed on to every run
   bool quiet = false;
+  // Runs per scene and swept value, with sample.seed = seed0, seed0 + 1, ...; unset: one run
+  // with the scene's own seed.
+  std::optional<int> seeds;
+  std::optional<std::int64_t> seed0;  // default 1
 };
 
 // One run per scene (and per sweep value), each in its own sub-folder of out_dir named after
 // the scene file and the swept value (made unique and kept inside out_dir). Then
 // out_dir/summary.csv, one row per run, and with a sweep out_dir/summary_error.png (+ .csv),
-// each test's error against the swept value. Returns the worst exit status.
+// each test's error against the swept value. With seeds, one run per seed of each, and from two
+// seeds on out_dir/summary_stats.csv and summary_granulometry.png: each scene and swept value's
+// mean and confidence interval over the seeds. Returns the worst exit status.
 int batch(const BatchOptions& options);
 
 // "key=v1,v2,v3" -> {"key=v1", "key=v2", "key=v3"}; throws std::invalid_argument if malformed.
@@ -31,18 +37,19 @@ std::vector<std::string> expand_sweep(const std::string& sweep);
 struct BatchRun {
   std::string scene;
   std::string folder;  // sub-folder of the batch's out_dir
+  std::string group;   // `folder` without the seed: the runs that differ only in their seed
   std::string value;   // the swept value, empty without a sweep
+  std::optional<std::int64_t> seed;  // with --seeds only
   std::vector<std::string> overrides;
 };
 
 // The runs of a batch, with their folders: the scene file's stem, "__key=value" with a sweep,
-// "_2", "_3"... when two scenes share a stem; every folder name is one safe path component.
+// "__seed=K" with seeds, "_2", "_3"... when two scenes share a stem; every folder name is one
+// safe path component.
 std::vector<BatchRun> plan_batch(const BatchOptions& options);
 
-// summary.csv: run, scene, the swept key (when there is one), each test's error_pp and bias_pp,
-// wall_time_s, particle_count, status; one row per run from its run.json (a missing or
-// unreadable one gives status "missing").
-void write_summary_csv(const std::vector<BatchRun>& runs, const std::string& sweep_key,
-                       const std::filesystem::path& out_dir);
+// Why the options' seeds cannot be run (one line naming the option, the value and the allowed
+// range), or "" when they can.
+std::string seed_options_error(const BatchOptions& options);
 
 }  // namespace sedem::app

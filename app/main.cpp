@@ -81,6 +81,11 @@ int main(int argc, char** argv) {
                    "Runs at once, each given its share of the cores (integrator.threads)")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
+  batch_cmd->add_option("--seeds", batch_options.seeds,
+                        "Runs per scene (and swept value) differing only in sample.seed, "
+                        "1 to 10000; from 2, summary_stats.csv: mean and 95 % interval");
+  batch_cmd->add_option("--seed0", batch_options.seed0,
+                        "The first seed of --seeds (default 1): seed0, seed0 + 1, ...");
   batch_cmd->add_flag("--overwrite", batch_options.overwrite,
                       "Replace the runs that the sub-folders hold");
   batch_cmd->add_flag("-q,--quiet", batch_options.quiet, "Print only warnings and errors");

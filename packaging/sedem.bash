@@ -19,7 +19,7 @@ _sedem() {
   local opts
   case $command in
     run) opts="--resume --out --overwrite --set --quiet -q --help -h" ;;
-    batch) opts="--sweep --out --set --jobs -j --overwrite --quiet -q --help -h" ;;
+    batch) opts="--sweep --seeds --seed0 --out --set --jobs -j --overwrite --quiet -q --help -h" ;;
     render) opts="--out --quiet -q --help -h" ;;
     reduce) opts="--out --method --gs --mass-g --help -h" ;;
     bench) opts="--help -h" ;;
@@ -27,7 +27,7 @@ _sedem() {
   case $prev in
     --out|--resume) COMPREPLY=($(compgen -d -- "$cur")); return ;;
     --method) COMPREPLY=($(compgen -W "d422 d7928" -- "$cur")); return ;;
-    --set|--sweep|--gs|--mass-g|--jobs|-j) return ;;
+    --set|--sweep|--seeds|--seed0|--gs|--mass-g|--jobs|-j) return ;;
   esac
   if [[ $cur == -* ]]; then
     COMPREPLY=($(compgen -W "$opts" -- "$cur"))

@@ -6,6 +6,7 @@
     >>> g = run.table("granulometry")          # a pandas DataFrame, or a dict of arrays
     >>> series = run.series("particles")       # the .pvd series, read with VTK
     >>> series.arrays(-1)["diameter"]          # a point array of the last output time
+    >>> b = sedem.load_batch("out/batch")      # summary.csv and summary_stats.csv
 
 Tables are pandas DataFrames when pandas is installed (and ``frame=True``), otherwise a
 dict of column name -> numpy array (numbers as float, empty cells as NaN; text columns as
@@ -20,8 +21,8 @@ import subprocess
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
-__all__ = ["Run", "Series", "load_run", "read_csv", "run", "batch", "reduce", "executable",
-           "SedemError"]
+__all__ = ["Run", "Series", "Batch", "load_run", "load_batch", "read_csv", "run", "batch",
+           "reduce", "executable", "SedemError"]
 
 
 class SedemError(RuntimeError):
@@ -152,6 +153,33 @@ def load_run(path):
     return Run(path)
 
 
+class Batch:
+    """A batch folder written by `sedem batch`: its summary.csv (one row per run) and, for a
+    batch of two seeds or more, summary_stats.csv (one row per scene and swept value: the
+    runs counted and each test's error_pp and bias_pp mean, sd, ci95_low and ci95_high)."""
+
+    def __init__(self, path, frame=True):
+        self.path = Path(path)
+        summary = self.path / "summary.csv"
+        if not summary.is_file():
+            raise FileNotFoundError(f"{summary}: no summary.csv (is this a sedem batch folder?)")
+        self.summary = read_csv(summary, frame=frame)
+        stats = self.path / "summary_stats.csv"
+        self.stats = read_csv(stats, frame=frame) if stats.is_file() else None
+
+    def __repr__(self):
+        return f"Batch({str(self.path)!r})"
+
+    def runs(self):
+        """Each run of the batch, in summary.csv's order (its "run" column names the folder)."""
+        return [Run(self.path / name) for name in list(self.summary["run"])]
+
+
+def load_batch(path, frame=True):
+    """The batch in folder `path`: .summary and .stats (None without seeds) as tables."""
+    return Batch(path, frame=frame)
+
+
 def executable():
     """The sedem program: $SEDEM_EXE, else `sedem` on the PATH, else the build tree's."""
     exe = os.environ.get("SEDEM_EXE") or shutil.which("sedem")
@@ -224,12 +252,19 @@ def _safe_folder(name):
     return "_" + out if not out or out.startswith(".") else out
 
 
-def batch(scenes, out="out/batch", sweep=None, set=None, jobs=1, overwrite=False, check=True):
-    """`sedem batch`: `scenes` a file or a list, `sweep` a dict {key: [values]} (one key).
-    Returns the batch's summary.csv as a table (DataFrame or dict of arrays)."""
+def batch(scenes, out="out/batch", sweep=None, set=None, jobs=1, overwrite=False, check=True,
+          seeds=None, seed0=None):
+    """`sedem batch`: `scenes` a file or a list, `sweep` a dict {key: [values]} (one key),
+    `seeds` runs of each differing only in sample.seed (seed0, seed0 + 1, ...).
+    Returns the batch's summary.csv as a table (DataFrame or dict of arrays); load_batch(out)
+    also reads the statistics over the seeds."""
     if isinstance(scenes, (str, os.PathLike)):
         scenes = [scenes]
     args = ["batch", *scenes, "--out", out, "--quiet", "--jobs", str(jobs)] + _sets(set)
+    if seeds is not None:
+        args += ["--seeds", str(seeds)]
+    if seed0 is not None:
+        args += ["--seed0", str(seed0)]
     if sweep:
         if len(sweep) != 1:
             raise ValueError("sweep: one key, e.g. {'sample.simulated_count': [1000, 2000]}")

@@ -88,6 +88,30 @@ def test_batch_returns_the_summary():
     np.testing.assert_array_equal(summary["sample.simulated_count"], [300, 400])
     assert list(summary["status"]) == ["complete", "complete"]
     assert (out / "summary_error.png").is_file()
+    assert sedem.load_batch(out).stats is None
+
+
+def test_a_seed_batch_loads_its_statistics():
+    out = OUT / "seed_batch"
+    shutil.rmtree(out, ignore_errors=True)
+    sedem.batch(DEMO, out=out, seeds=3, seed0=4, jobs=2,
+                set=dict(SMALL, **{"run.end_time_s": 20,
+                                   "instruments.hydrometer.times_min": [0.25]}))
+    b = sedem.load_batch(out, frame=False)
+    np.testing.assert_array_equal(b.summary["seed"], [4, 5, 6])
+    assert [r.record["seed"] for r in b.runs()] == [4, 5, 6]
+    assert b.stats["runs"].tolist() == [3]
+    errors = b.summary["hydrometer_error_pp"]
+    mean, sd = errors.mean(), errors.std(ddof=1)
+    # summary.csv holds 6 significant digits, summary_stats.csv every digit.
+    np.testing.assert_allclose(b.stats["hydrometer_error_pp_mean"], [mean], rtol=1e-5)
+    np.testing.assert_allclose(b.stats["hydrometer_error_pp_sd"], [sd], rtol=1e-5)
+    half = 4.302653 * sd / np.sqrt(3)  # t(0.95, 2 dof)
+    close = dict(rtol=0, atol=1e-4 * (abs(mean) + sd))
+    np.testing.assert_allclose(b.stats["hydrometer_error_pp_ci95_low"], [mean - half], **close)
+    np.testing.assert_allclose(b.stats["hydrometer_error_pp_ci95_high"], [mean + half], **close)
+    # No buoyancy reading in 20 s: nothing to average, empty cells.
+    assert np.isnan(b.stats["buoyancy_error_pp_mean"][0])
 
 
 def test_reduce(tmp_path):
