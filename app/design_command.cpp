@@ -91,9 +91,8 @@ int run_design(const DesignCommandOptions& o) {
   if (o.dem_count < -1 || o.dem_count > 100'000'000)
     throw std::invalid_argument("--dem-count " + std::to_string(o.dem_count) +
                                 ": allowed 0 (no DEM run) to 100000000");
-  const std::string out = o.out.empty()
-                              ? "out/design/" + safe_folder_name(scene.name + "_" + o.test)
-                              : o.out;
+  const std::string out =
+      o.out.empty() ? "out/design/" + safe_folder_name(scene.name + "_" + o.test) : o.out;
   fs::create_directories(out);
 
   const auto start = std::chrono::steady_clock::now();
@@ -154,21 +153,22 @@ int run_design(const DesignCommandOptions& o) {
   render::Plot plot;
   plot.title = scene.name + ", " + o.test + ": the standard schedule and the designed one";
   plot.x = render::axis("diameter", "µm", true);
-  plot.y = render::axis("percent finer", "%");
+  plot.y = render::axis("percent finer", "%", 0, 100);
   render::PlotSeries truth("true curve", {}, {}, render::SeriesStyle::line);
   for (std::size_t k = 0; k < design.truth.diameters.size(); ++k) {
     truth.x.push_back(design.truth.diameters[k] * 1e6);
     truth.y.push_back(design.truth.percent[k]);
   }
   plot.series.push_back(truth);
-  plot.series.push_back(
-      curve_series("standard schedule", design.standard_score, render::SeriesStyle::line_and_points));
-  plot.series.push_back(
-      curve_series("designed schedule", design.designed_score, render::SeriesStyle::line_and_points));
+  plot.series.push_back(curve_series("standard schedule", design.standard_score,
+                                     render::SeriesStyle::line_and_points));
+  plot.series.push_back(curve_series("designed schedule", design.designed_score,
+                                     render::SeriesStyle::line_and_points));
   if (dem)
     plot.series.push_back(
         curve_series("designed, DEM", dem->designed, render::SeriesStyle::dashed));
-  render::write_figure(render::single_plot(plot, 760, 480), fs::path(out) / "design");
+  // design_figure, not design: the figure's own CSV must not replace design.csv.
+  render::write_figure(render::single_plot(plot, 760, 480), fs::path(out) / "design_figure");
 
   if (!o.quiet) {
     std::printf("%s, %s, over %.2f-%.2f um (searched in %.2f s):\n", scene.name.c_str(),
@@ -179,8 +179,10 @@ int run_design(const DesignCommandOptions& o) {
                   ref.worst_diameter * 1e6, ref.mean_error);
       if (d) std::printf(" (DEM: %.2f, mean %.2f)", d->worst_error, d->mean_error);
       if (!std::isnan(s.depth_fraction)) std::printf(", depth %.2f H", s.depth_fraction);
-      if (s.times.size() <= 30) std::printf(", at %s min", minutes_list(s.times).c_str());
-      else std::printf(", %zu readings", s.times.size());
+      if (s.times.size() <= 30)
+        std::printf(", at %s min", minutes_list(s.times).c_str());
+      else
+        std::printf(", %zu readings", s.times.size());
       std::printf("\n");
     };
     line("standard", design.standard, design.standard_score, dem ? &dem->standard : nullptr);

@@ -9,8 +9,8 @@ namespace sedem::app {
 struct DesignCommandOptions {
   std::string scene;
   std::string test;
-  long readings = -1;        // -1: the standard's count
-  std::string out;           // default out/design/<scene name>_<test>
+  long readings = -1;  // -1: the standard's count
+  std::string out;     // default out/design/<scene name>_<test>
   std::vector<std::string> overrides;
   // Particles of the DEM run that confirms the design: -1 the scene's own count, 0 none.
   std::int64_t dem_count = -1;

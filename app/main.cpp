@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "app/batch_command.h"
-#include "app/design_command.h"
 #include "app/bench_command.h"
+#include "app/design_command.h"
 #include "app/exit_codes.h"
 #include "app/invert_command.h"
 #include "app/qt_platform.h"

@@ -11,14 +11,17 @@ namespace sedem {
 
 namespace {
 
-bool same_depth(double a, double b) { return (std::isnan(a) && std::isnan(b)) || a == b; }
+bool same_depth(double a, double b) {
+  return (std::isnan(a) && std::isnan(b)) || a == b;
+}
 
 // The DEM readings of `test` at the times of every schedule given (all at one depth).
 std::vector<Reading> dem_readings(const Scene& scene, const std::string& test,
                                   std::vector<const ReadingSchedule*> schedules, double& wall) {
   ReadingSchedule all;
   all.depth_fraction = schedules.front()->depth_fraction;
-  for (const auto* s : schedules) all.times.insert(all.times.end(), s->times.begin(), s->times.end());
+  for (const auto* s : schedules)
+    all.times.insert(all.times.end(), s->times.begin(), s->times.end());
   std::sort(all.times.begin(), all.times.end());
   all.times.erase(std::unique(all.times.begin(), all.times.end()), all.times.end());
   const Scene s = scene_for_schedule(scene, test, all);
@@ -50,7 +53,8 @@ ScheduleConfirmation confirm_with_dem(const Scene& scene, const ScheduleDesign& 
   c.particles = particles;
   std::vector<Reading> standard, designed;
   if (same_depth(design.standard.depth_fraction, design.designed.depth_fraction)) {
-    const auto rows = dem_readings(s, design.test, {&design.standard, &design.designed}, c.wall_seconds);
+    const auto rows =
+        dem_readings(s, design.test, {&design.standard, &design.designed}, c.wall_seconds);
     standard = at_times(rows, design.standard.times);
     designed = at_times(rows, design.designed.times);
   } else {

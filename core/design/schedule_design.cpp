@@ -46,7 +46,6 @@ double standard_depth(const Scene& scene, const std::string& test) {
   return std::numeric_limits<double>::quiet_NaN();
 }
 
-
 struct Gap {
   double error = -1, diameter = 0, curve = 0, truth = 0;
   double area = 0;  // pp x ln(d): |curve - truth| integrated over the segment
@@ -152,8 +151,8 @@ Path minimax_path(const std::vector<Reading>& candidates, std::size_t count, dou
       solve([](double a, double b) { return std::max(a, b); }, gap, kInfinity);
   if (worst_end == n) return path;
   path.worst = worst;
-  auto [end, summed] = solve([](double a, double b) { return a + b; }, area,
-                             worst * (1 + 1e-9) + 1e-12);
+  auto [end, summed] =
+      solve([](double a, double b) { return a + b; }, area, worst * (1 + 1e-9) + 1e-12);
   if (end == n) {  // cannot happen (the minimax path qualifies), but never lose the answer
     end = worst_end;
     solve([](double a, double b) { return std::max(a, b); }, gap, kInfinity);
@@ -317,8 +316,7 @@ ScheduleDesign design_schedule(const Scene& scene, const DesignOptions& options)
   design.standard.times = standard_times(scene, options.test);
   std::sort(design.standard.times.begin(), design.standard.times.end());
   design.standard.depth_fraction = standard_depth(scene, options.test);
-  const std::size_t count =
-      options.readings == 0 ? design.standard.times.size() : options.readings;
+  const std::size_t count = options.readings == 0 ? design.standard.times.size() : options.readings;
 
   const ScheduleReader reader(scene, options.size_count);
   const auto standard_rows = reader.readings(options.test, design.standard);
@@ -334,7 +332,8 @@ ScheduleDesign design_schedule(const Scene& scene, const DesignOptions& options)
   design.floor.depth_fraction = design.standard.depth_fraction;
   const double first = design.standard.times.front(), last = design.standard.times.back();
   design.floor.times = {first};
-  for (double t = (std::floor(first / 60) + 1) * 60; t < last; t += 60) design.floor.times.push_back(t);
+  for (double t = (std::floor(first / 60) + 1) * 60; t < last; t += 60)
+    design.floor.times.push_back(t);
   design.floor.times.push_back(last);
   design.floor_score = score_readings(reader.readings(options.test, design.floor), design.truth);
 

@@ -38,9 +38,9 @@ struct ScheduleScore {
 
 // The diameters on which a schedule is judged, and the truth on them.
 struct TruthGrid {
-  double low = 0, high = 0;                 // m, the range
-  std::vector<double> diameters;            // m, ascending, the range's ends included
-  std::vector<double> percent;              // the true percent finer at each
+  double low = 0, high = 0;                  // m, the range
+  std::vector<double> diameters;             // m, ascending, the range's ends included
+  std::vector<double> percent;               // the true percent finer at each
   std::function<double(double)> percent_at;  // the true percent finer at any diameter
 };
 
@@ -57,10 +57,10 @@ ScheduleScore score_readings(const std::vector<Reading>& readings, const TruthGr
 std::vector<double> clock_times(double first, double last);
 
 struct DesignOptions {
-  std::string test;             // hydrometer | buoyancy | pipette
-  std::size_t readings = 0;     // 0: as many as the standard schedule
+  std::string test;                // hydrometer | buoyancy | pipette
+  std::size_t readings = 0;        // 0: as many as the standard schedule
   std::int64_t size_count = 1000;  // sizes of the reference's sample: near the continuous curve
-  double last_time = 86400;     // s: no reading after 24 h
+  double last_time = 86400;        // s: no reading after 24 h
   // Depths tried for the sphere and the pipette, fractions of the height (the standard's is
   // always among them).
   std::vector<double> depth_fractions{0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.5, 0.6, 0.7};
