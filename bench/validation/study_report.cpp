@@ -122,7 +122,7 @@ std::string study_markdown(const std::vector<StudyRegime>& regimes) {
   std::string s =
       "The rule, written before the runs: over the seeds, the 95 % interval of the mean effect "
       "*supports* the paper when it lies above zero, *contradicts* it when it lies below zero, "
-      "finds *no effect* when it lies within +-" +
+      "finds *no effect* when it lies within ±" +
       fixed(kPracticalMargin, 1) +
       " pp (the practical margin), and is otherwise *inconclusive*, with the number of seeds "
       "at which an interval of the same spread would decide it.\n";
