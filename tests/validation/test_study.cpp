@@ -3,8 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
+#include "bench/validation/markdown.h"
 #include "bench/validation/study.h"
+#include "bench/validation/study_report.h"
 #include "tests/validation/validation_test_support.h"
 
 namespace sedem::validation {
@@ -140,6 +144,27 @@ TEST(StudyEffects, ARegimeDecidesEachConclusionOverItsSeeds) {
   EXPECT_NEAR(r.above_100.mean, 2, 1e-12);
   EXPECT_EQ(r.conclusions[4].decision.text(), "not run");
   EXPECT_EQ(study_regime("passing", seeds, true).conclusions[4].decision.seeds_to_decide, 4u);
+}
+
+TEST(StudyReport, TheSectionStatesTheRuleAndFitsTheDocument) {
+  std::vector<SeedEffects> seeds(3);
+  for (std::size_t s = 0; s < 3; ++s) {
+    seeds[s].dem.fill(double(s + 1));
+    seeds[s].above_100 = double(2 * s);
+  }
+  StudyRegime r = study_regime("contacts", seeds, false);
+  r.note = "3 seeds";
+  const std::string section = study_markdown({r});
+  for (const char* text :
+       {"written before the runs", "within ±0.5 pp", "**contacts** (3 seeds)",
+        "| 1 | Inside the range", "2.00 [-0.48, 4.48]",
+        "**inconclusive: ~4 seeds would decide it**", "**not run**", "| 2.0 [-3.0, 7.0] |"})
+    EXPECT_NE(section.find(text), std::string::npos) << text << "\n" << section;
+  std::ifstream doc(std::string(SEDEM_SOURCE_DIR) + "/docs/validation.md");
+  std::stringstream text;
+  text << doc.rdbuf();
+  const std::string updated = replace_generated(text.str(), "study", section);
+  EXPECT_NE(updated.find(section), std::string::npos);
 }
 
 }  // namespace
