@@ -7,6 +7,11 @@
 //                                  [--depth DIR...] [--early-s S] [--machine TEXT]
 //                                  [--update docs/validation.md]
 //   sedem_validation_report variant RUN_DIR VARIANT_DIR --set key=value...
+//   sedem_validation_report study --regime LABEL=DIR... [--out DIR] [--early-s S]
+//                                 [--update docs/validation.md]
+//
+// The study decides the conclusions over seeds: each DIR holds seed batches (main/ and,
+// optionally, shallow/ and deep/; see bench/validation/study_report.h).
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -16,36 +21,55 @@
 #include "bench/validation/markdown.h"
 #include "bench/validation/report.h"
 #include "bench/validation/run_folder.h"
+#include "bench/validation/study_report.h"
 
 namespace {
 
 using namespace sedem::validation;
 namespace fs = std::filesystem;
 
-// The folders that can be read; a run that failed before writing its results is named and
-// left out, so that one failed run of many does not lose the report.
 std::vector<RunFolder> read_all(const std::vector<std::string>& dirs) {
-  std::vector<RunFolder> runs;
-  for (const auto& d : dirs) {
-    try {
-      runs.push_back(read_run_folder(d));
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "sedem_validation_report: left out: %s\n", e.what());
-    }
-  }
-  return runs;
+  return read_run_folders({dirs.begin(), dirs.end()});
 }
 
-void update(const fs::path& file, const Report& report) {
+void update(const fs::path& file, const std::vector<Section>& sections) {
   std::ifstream in(file);
   if (!in) throw std::runtime_error(file.string() + ": cannot read it");
   std::stringstream text;
   text << in.rdbuf();
   std::string doc = text.str();
-  for (const auto& s : report.sections) doc = replace_generated(doc, s.name, s.markdown);
+  for (const auto& s : sections) doc = replace_generated(doc, s.name, s.markdown);
   std::ofstream out(file);
   out << doc;
   if (!out) throw std::runtime_error(file.string() + ": cannot write it");
+}
+
+// "passing=out/validation/study/passing" -> the label and the folder.
+std::pair<std::string, fs::path> split_regime(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+    throw std::invalid_argument("--regime " + text + ": expected LABEL=DIR");
+  return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+void run_study(const std::vector<std::string>& regime_args, const fs::path& out, double early_s,
+               const std::string& doc) {
+  std::vector<StudyRegime> regimes;
+  for (const auto& arg : regime_args) {
+    const auto [label, dir] = split_regime(arg);
+    regimes.push_back(read_regime(label, dir, early_s));
+  }
+  write_study_files(regimes, out);
+  const std::string markdown = study_markdown(regimes);
+  if (doc.empty()) {
+    std::printf("<!-- study -->\n%s\n", markdown.c_str());
+  } else {
+    update(doc, {{"study", markdown}});
+    std::printf("updated %s\n", doc.c_str());
+  }
+  std::printf("wrote %s and %s\n", (out / "study.csv").c_str(), (out / "study_seeds.csv").c_str());
+  for (const auto& r : regimes)
+    for (const auto& c : r.conclusions) std::printf("%s\n", study_line(r, c).c_str());
 }
 
 }  // namespace
@@ -75,11 +99,30 @@ int main(int argc, char** argv) {
   variant_cmd->add_option("run", run_dir, "The run folder")->required();
   variant_cmd->add_option("variant", variant_dir, "The new folder")->required();
   variant_cmd->add_option("--set", sets, "key=value for the scene (repeatable)")->required();
+
+  std::vector<std::string> regimes;
+  std::string study_out = "out/validation/study";
+  double study_early_s = kStudyEarlyTime;
+  std::string study_doc;
+  auto* study_cmd = cli.add_subcommand(
+      "study", "The paper's conclusions decided over seeds: study.csv, study_seeds.csv");
+  study_cmd->add_option("--regime", regimes, "LABEL=DIR, DIR holding main/ [shallow/ deep/]")
+      ->required();
+  study_cmd->add_option("--out", study_out, "Folder for study.csv and study_seeds.csv")
+      ->capture_default_str();
+  study_cmd->add_option("--early-s", study_early_s, "The early part: readings up to this time, s")
+      ->capture_default_str();
+  study_cmd->add_option("--update", study_doc,
+                        "Rewrite the generated section study of this markdown file");
   CLI11_PARSE(cli, argc, argv);
 
   try {
     if (variant_cmd->parsed()) {
       make_variant(run_dir, variant_dir, sets);
+      return 0;
+    }
+    if (study_cmd->parsed()) {
+      run_study(regimes, study_out, study_early_s, study_doc);
       return 0;
     }
     in.runs = read_all(runs);
@@ -92,7 +135,7 @@ int main(int argc, char** argv) {
       for (const auto& s : report.sections)
         std::printf("<!-- %s -->\n%s\n", s.name.c_str(), s.markdown.c_str());
     } else {
-      update(doc, report);
+      update(doc, report.sections);
       std::printf("updated %s\n", doc.c_str());
     }
     for (const auto& c : report.checks) std::printf("%s\n", verdict_line(c).c_str());

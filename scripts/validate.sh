@@ -13,6 +13,17 @@
 # same runs with F times fewer particles (default 4), those again with count weighting, and
 # reads the five runs' particles again with the sphere and the pipette at several depths.
 # --report-only skips the simulations and uses what --out holds.
+#
+#   scripts/validate.sh --study [--seeds N] [--count-passing N] [--count-contacts N]
+#                       [--regimes passing,contacts] [--jobs J] [--short] [--report-only]
+#
+# --study decides the paper's conclusions over seeds instead (docs/validation.md, "The
+# conclusions over seeds"): per regime, the five samples --seeds times (default 10) and the same
+# seeds with the sphere and the pipette at 0.1 and 0.7 H, into DIR/study/<regime>/{main,
+# shallow,deep}; then the study section of the report. Regimes: "passing" (suspension contacts
+# off, --count-passing particles, default 1 000 000) and "contacts" (contacts everywhere,
+# --count-contacts, default 100 000). --jobs: runs at a time (default: all cores). With
+# --short: 120 particles, 120 s and 3 seeds, a pipeline check of a minute or two.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -26,6 +37,13 @@ report=build/bench/sedem_validation_report
 doc=docs/validation.md
 sets=()
 depths="0.1 0.2 0.3 0.5 0.7"
+study=false
+short=false
+seeds=""
+count_passing=""
+count_contacts=""
+regimes=passing,contacts
+jobs=$(nproc)
 
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -34,8 +52,14 @@ while [ $# -gt 0 ]; do
     --out) out="$2"; shift 2 ;;
     --reduce) reduce="$2"; shift 2 ;;
     --set) sets+=(--set "$2"); shift 2 ;;
+    --study) study=true; shift ;;
+    --seeds) seeds="$2"; shift 2 ;;
+    --count-passing) count_passing="$2"; shift 2 ;;
+    --count-contacts) count_contacts="$2"; shift 2 ;;
+    --regimes) regimes="$2"; shift 2 ;;
+    --jobs) jobs="$2"; shift 2 ;;
     --short)
-      count=120; end=120
+      short=true; count=120; end=120
       sets+=(--set sample.size_count=30 --set "instruments.hydrometer.times_min=[0.5,1,1.5,2]"
         --set "instruments.buoyancy.times_min=[0.25,0.5,0.75,1,1.5,2]"
         --set "instruments.pipette.times_min=[0.25,0.5,0.75,1,1.5,2]")
@@ -44,7 +68,7 @@ while [ $# -gt 0 ]; do
     --sedem) sedem="$2"; shift 2 ;;
     --report) report="$2"; shift 2 ;;
     --doc) doc="$2"; shift 2 ;;
-    -h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "validate.sh: unknown option $1 (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -67,6 +91,53 @@ common=(--set "run.end_time_s=$end" ${sets[@]+"${sets[@]}"})
 # Progress (simulated time, ETA) only on a terminal: in a log it is noise.
 if [ ! -t 2 ]; then common+=(--quiet); fi
 lean=(--set output.frames=false --set output.fields=false --set output.particles=false)
+
+if [ "$study" = true ]; then
+  # Written before the runs: the study's counts; --short keeps its pipeline check tiny.
+  if [ "$short" = true ]; then
+    seeds=${seeds:-3}; count_passing=${count_passing:-120}; count_contacts=${count_contacts:-120}
+  fi
+  seeds=${seeds:-10}; count_passing=${count_passing:-1000000}
+  count_contacts=${count_contacts:-100000}
+  IFS=, read -r -a regime_list <<< "$regimes"
+  for r in "${regime_list[@]}"; do
+    case "$r" in
+      passing|contacts) ;;
+      *) echo "validate.sh: unknown regime $r (passing, contacts)" >&2; exit 1 ;;
+    esac
+  done
+  runs_total=$(( ${#regime_list[@]} * 3 * ${#scenes[@]} * seeds ))
+  echo "validate.sh: study over $seeds seeds, regimes $regimes: $runs_total runs" \
+    "(${#scenes[@]} samples x $seeds seeds x 3 batches (main, shallow, deep) per regime)"
+  regime_args=()
+  for r in "${regime_list[@]}"; do
+    dir="$out/study/$r"
+    regime_args+=(--regime "$r=$dir")
+    if [ "$report_only" = true ]; then continue; fi
+    if [ "$r" = passing ]; then
+      n=$count_passing; regime_sets=(--set forces.suspension_contacts=false)
+    else
+      n=$count_contacts; regime_sets=()
+    fi
+    study_common=("${scenes[@]}" --seeds "$seeds" --jobs "$jobs" --set "sample.simulated_count=$n"
+      ${regime_sets[@]+"${regime_sets[@]}"} "${lean[@]}" "${common[@]}")
+    echo "validate.sh: $r, $n particles -> $dir/main"
+    "$sedem" batch "${study_common[@]}" --out "$dir/main" --overwrite ||
+      echo "validate.sh: a run failed; the study leaves it out" >&2
+    for depth in shallow:0.1 deep:0.7; do
+      echo "validate.sh: $r, sphere and pipette at ${depth#*:} H -> $dir/${depth%%:*}"
+      "$sedem" batch "${study_common[@]}" --out "$dir/${depth%%:*}" --overwrite \
+        --set "instruments.buoyancy.depth_fraction=${depth#*:}" \
+        --set "instruments.pipette.depth_fraction=${depth#*:}" \
+        --set instruments.hydrometer.enabled=false ||
+        echo "validate.sh: a run failed; the study leaves it out" >&2
+    done
+  done
+  mkdir -p "$out/study"
+  "$report" study "${regime_args[@]}" --out "$out/study" --early-s "$early" --update "$doc" |
+    tee "$out/study/verdicts.txt"
+  exit 0
+fi
 
 # A failed run is reported (its status shows in the report) rather than losing the others;
 # Ctrl-C stops the whole validation.

@@ -1,6 +1,7 @@
 #include "bench/validation/run_folder.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -204,6 +205,18 @@ RunFolder read_run_folder(const fs::path& dir) {
   const fs::path fig12 = dir / "figures" / "fig12_largest_diameter.csv";
   if (fs::exists(fig12)) run.profiles = parse_fig12(read_csv(fig12), run.name);
   return run;
+}
+
+std::vector<RunFolder> read_run_folders(const std::vector<fs::path>& dirs) {
+  std::vector<RunFolder> runs;
+  for (const auto& d : dirs) {
+    try {
+      runs.push_back(read_run_folder(d));
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "sedem_validation_report: left out: %s\n", e.what());
+    }
+  }
+  return runs;
 }
 
 void make_variant(const fs::path& run_dir, const fs::path& variant_dir,

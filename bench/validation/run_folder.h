@@ -53,6 +53,9 @@ struct RunFolder {
 // Reads run.json, granulometry.csv, readings_<test>.csv and, when present,
 // figures/fig12_largest_diameter.csv. Throws std::runtime_error naming the file.
 RunFolder read_run_folder(const std::filesystem::path& dir);
+// The folders that can be read; one that cannot is named on stderr and left out, so that one
+// failed run of many does not lose the report.
+std::vector<RunFolder> read_run_folders(const std::vector<std::filesystem::path>& dirs);
 
 // A CSV with a header row, as columns of text (cells may be empty).
 struct CsvTable {
