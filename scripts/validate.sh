@@ -15,14 +15,17 @@
 # --report-only skips the simulations and uses what --out holds.
 #
 #   scripts/validate.sh --study [--seeds N] [--count-passing N] [--count-contacts N]
-#                       [--regimes passing,contacts] [--jobs J] [--short] [--report-only]
+#                       [--regimes passing,contacts] [--depth-regimes passing,contacts]
+#                       [--jobs J] [--short] [--report-only]
 #
 # --study decides the paper's conclusions over seeds instead (docs/validation.md, "The
 # conclusions over seeds"): per regime, the five samples --seeds times (default 10) and the same
 # seeds with the sphere and the pipette at 0.1 and 0.7 H, into DIR/study/<regime>/{main,
 # shallow,deep}; then the study section of the report. Regimes: "passing" (suspension contacts
 # off, --count-passing particles, default 1 000 000) and "contacts" (contacts everywhere,
-# --count-contacts, default 100 000). --jobs: runs at a time (default: all cores). With
+# --count-contacts, default 100 000). --depth-regimes: the regimes that also get the depth
+# runs (default: every one; docs/validation.md's study gave them to "passing" only, as each
+# doubles a regime's cost). --jobs: runs at a time (default: all cores). With
 # --short: 120 particles, 120 s and 3 seeds, a pipeline check of a minute or two.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -43,6 +46,7 @@ seeds=""
 count_passing=""
 count_contacts=""
 regimes=passing,contacts
+depth_regimes=passing,contacts
 jobs=$(nproc)
 
 while [ $# -gt 0 ]; do
@@ -57,6 +61,7 @@ while [ $# -gt 0 ]; do
     --count-passing) count_passing="$2"; shift 2 ;;
     --count-contacts) count_contacts="$2"; shift 2 ;;
     --regimes) regimes="$2"; shift 2 ;;
+    --depth-regimes) depth_regimes="$2"; shift 2 ;;
     --jobs) jobs="$2"; shift 2 ;;
     --short)
       short=true; count=120; end=120
@@ -106,9 +111,13 @@ if [ "$study" = true ]; then
       *) echo "validate.sh: unknown regime $r (passing, contacts)" >&2; exit 1 ;;
     esac
   done
-  runs_total=$(( ${#regime_list[@]} * 3 * ${#scenes[@]} * seeds ))
-  echo "validate.sh: study over $seeds seeds, regimes $regimes: $runs_total runs" \
-    "(${#scenes[@]} samples x $seeds seeds x 3 batches (main, shallow, deep) per regime)"
+  depth_count=0
+  for r in "${regime_list[@]}"; do
+    case ",$depth_regimes," in *",$r,"*) depth_count=$((depth_count + 1)) ;; esac
+  done
+  runs_total=$(( (${#regime_list[@]} + 2 * depth_count) * ${#scenes[@]} * seeds ))
+  echo "validate.sh: study over $seeds seeds, regimes $regimes (depth runs: $depth_regimes):" \
+    "$runs_total runs (${#scenes[@]} samples x $seeds seeds x main, shallow and deep batches)"
   regime_args=()
   for r in "${regime_list[@]}"; do
     dir="$out/study/$r"
@@ -124,12 +133,16 @@ if [ "$study" = true ]; then
     echo "validate.sh: $r, $n particles -> $dir/main"
     "$sedem" batch "${study_common[@]}" --out "$dir/main" --overwrite ||
       echo "validate.sh: a run failed; the study leaves it out" >&2
+    # The depth runs: only in the regimes asked for (each doubles a regime's cost), and only
+    # as long as the sphere's and the pipette's last reading (480 min).
+    case ",$depth_regimes," in *",$r,"*) ;; *) continue ;; esac
+    depth_end=$(( end < 28800 ? end : 28800 ))
     for depth in shallow:0.1 deep:0.7; do
       echo "validate.sh: $r, sphere and pipette at ${depth#*:} H -> $dir/${depth%%:*}"
       "$sedem" batch "${study_common[@]}" --out "$dir/${depth%%:*}" --overwrite \
         --set "instruments.buoyancy.depth_fraction=${depth#*:}" \
         --set "instruments.pipette.depth_fraction=${depth#*:}" \
-        --set instruments.hydrometer.enabled=false ||
+        --set instruments.hydrometer.enabled=false --set "run.end_time_s=$depth_end" ||
         echo "validate.sh: a run failed; the study leaves it out" >&2
     done
   done
