@@ -1,7 +1,7 @@
 # Writes the man page sedem.1 from `sedem --help` and `sedem COMMAND --help`, so that it
 # never disagrees with the program. Run at build time:
 #   cmake -DSEDEM=path/to/sedem -DVERSION=x.y.z -DOUT=sedem.1 -P man_page.cmake
-set(commands run batch render reduce bench)
+set(commands run batch render reduce invert design bench)
 
 function(help_of args var)
   execute_process(COMMAND ${SEDEM} ${args} --help OUTPUT_VARIABLE text RESULT_VARIABLE status)

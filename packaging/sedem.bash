@@ -7,10 +7,10 @@ _sedem() {
     cur=${COMP_WORDS[COMP_CWORD]} prev=${COMP_WORDS[COMP_CWORD-1]}
     words=("${COMP_WORDS[@]}") cword=$COMP_CWORD
   fi
-  local commands="run batch render reduce bench"
+  local commands="run batch render reduce invert design bench"
   local command="" i
   for ((i = 1; i < cword; i++)); do
-    case ${words[i]} in run|batch|render|reduce|bench) command=${words[i]}; break ;; esac
+    case ${words[i]} in run|batch|render|reduce|invert|design|bench) command=${words[i]}; break ;; esac
   done
   if [[ -z $command ]]; then
     COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
@@ -22,21 +22,27 @@ _sedem() {
     batch) opts="--sweep --seeds --seed0 --out --set --jobs -j --overwrite --quiet -q --help -h" ;;
     render) opts="--out --quiet -q --help -h" ;;
     reduce) opts="--out --method --gs --mass-g --help -h" ;;
+    invert) opts="--run --test --scene --out --gs --mass-g --volume-ml --area-cm2 --depth-cm
+      --temperature-c --resolution --refine --replicas --coverage --seed --quiet -q --help -h" ;;
+    design) opts="--test --readings --out --set --dem-count --sizes --quiet -q --help -h" ;;
     bench) opts="--help -h" ;;
   esac
   case $prev in
     --out|--resume) COMPREPLY=($(compgen -d -- "$cur")); return ;;
     --method) COMPREPLY=($(compgen -W "d422 d7928" -- "$cur")); return ;;
-    --set|--sweep|--seeds|--seed0|--gs|--mass-g|--jobs|-j) return ;;
+    --test) COMPREPLY=($(compgen -W "hydrometer buoyancy pipette" -- "$cur")); return ;;
+    --run) COMPREPLY=($(compgen -d -- "$cur")); return ;;
+    --scene) COMPREPLY=($(compgen -f -X '!*.toml' -- "$cur") $(compgen -d -- "$cur")); return ;;
+    --set|--sweep|--seeds|--seed0|--gs|--mass-g|--jobs|-j|--readings|--dem-count|--sizes) return ;;
   esac
   if [[ $cur == -* ]]; then
     COMPREPLY=($(compgen -W "$opts" -- "$cur"))
     return
   fi
   case $command in
-    run|batch) COMPREPLY=($(compgen -f -X '!*.toml' -- "$cur") $(compgen -d -- "$cur")) ;;
+    run|batch|design) COMPREPLY=($(compgen -f -X '!*.toml' -- "$cur") $(compgen -d -- "$cur")) ;;
     render) COMPREPLY=($(compgen -d -- "$cur")) ;;
-    reduce) COMPREPLY=($(compgen -f -X '!*.csv' -- "$cur") $(compgen -d -- "$cur")) ;;
+    reduce|invert) COMPREPLY=($(compgen -f -X '!*.csv' -- "$cur") $(compgen -d -- "$cur")) ;;
     bench) COMPREPLY=($(compgen -W "engine accuracy speedup" -- "$cur")) ;;
   esac
 }

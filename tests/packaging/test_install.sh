@@ -20,9 +20,9 @@ done
 # The man page: every command, and every option of every command's --help.
 man=$prefix/share/man/man1/sedem.1
 grep -q '^\.TH SEDEM 1' "$man" || fail "man page header"
-for c in run batch render reduce bench; do
+for c in run batch render reduce invert design bench; do
   grep -q "^\.SS sedem $c" "$man" || fail "man page: no section for $c"
-  for o in $("$exe" "$c" --help | grep -o -- ' --[a-z][a-z-]*' | sort -u); do
+  for o in $("$exe" "$c" --help | grep -o -- ' --[a-z][a-z0-9-]*' | sort -u); do
     grep -q -- "$o" "$man" || fail "man page: $c $o missing"
   done
 done
@@ -40,9 +40,9 @@ words=" $(complete_words sedem r) "
 for c in run render reduce; do
   [[ $words == *" $c "* ]] || fail "completion of 'sedem r' lacks $c: $words"
 done
-for c in run batch render reduce; do
+for c in run batch render reduce invert design; do
   words=" $(complete_words sedem "$c" --) "
-  for o in $("$exe" "$c" --help | grep -o -- ' --[a-z][a-z-]*' | sort -u); do
+  for o in $("$exe" "$c" --help | grep -o -- ' --[a-z][a-z0-9-]*' | sort -u); do
     [[ $words == *" $o "* ]] || fail "completion of 'sedem $c --' lacks $o: $words"
   done
 done
