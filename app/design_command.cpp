@@ -122,6 +122,10 @@ int run_design(const DesignCommandOptions& o) {
     j[name] = schedule_json(*schedule);
     j[name]["reference"] = score_json(*score);
   }
+  if (!design.depth_floor.times.empty()) {
+    j["depth_floor"] = schedule_json(design.depth_floor);
+    j["depth_floor"]["reference"] = score_json(design.depth_floor_score);
+  }
   if (dem) {
     j["dem"] = {{"particles", dem->particles}, {"wall_seconds", dem->wall_seconds}};
     j["standard"]["dem"] = score_json(dem->standard);
@@ -141,6 +145,9 @@ int run_design(const DesignCommandOptions& o) {
                    design.designed.depth_fraction);
     write_csv_rows(f, "floor", "reference", design.floor_score, design.truth,
                    design.floor.depth_fraction);
+    if (!design.depth_floor.times.empty())
+      write_csv_rows(f, "depth_floor", "reference", design.depth_floor_score, design.truth,
+                     design.depth_floor.depth_fraction);
     if (dem) {
       write_csv_rows(f, "standard", "dem", dem->standard, design.truth,
                      design.standard.depth_fraction);
@@ -175,7 +182,7 @@ int run_design(const DesignCommandOptions& o) {
                 o.test.c_str(), design.truth.low * 1e6, design.truth.high * 1e6, search_s);
     auto line = [&](const char* name, const ReadingSchedule& s, const ScheduleScore& ref,
                     const ScheduleScore* d) {
-      std::printf("  %-8s worst %6.2f pp at %6.2f um, mean %5.2f pp", name, ref.worst_error,
+      std::printf("  %-11s worst %6.2f pp at %6.2f um, mean %5.2f pp", name, ref.worst_error,
                   ref.worst_diameter * 1e6, ref.mean_error);
       if (d) std::printf(" (DEM: %.2f, mean %.2f)", d->worst_error, d->mean_error);
       if (!std::isnan(s.depth_fraction)) std::printf(", depth %.2f H", s.depth_fraction);
@@ -188,6 +195,8 @@ int run_design(const DesignCommandOptions& o) {
     line("standard", design.standard, design.standard_score, dem ? &dem->standard : nullptr);
     line("designed", design.designed, design.designed_score, dem ? &dem->designed : nullptr);
     line("floor", design.floor, design.floor_score, nullptr);
+    if (!design.depth_floor.times.empty())
+      line("depth floor", design.depth_floor, design.depth_floor_score, nullptr);
     std::printf("wrote %s\n", out.c_str());
   }
   return exit_code::ok;

@@ -16,6 +16,7 @@
 #
 #   scripts/validate.sh --study [--seeds N] [--count-passing N] [--count-contacts N]
 #                       [--regimes passing,contacts] [--depth-regimes passing,contacts]
+#                       [--count-depth N]
 #                       [--jobs J] [--short] [--report-only]
 #
 # --study decides the paper's conclusions over seeds instead (docs/validation.md, "The
@@ -24,9 +25,10 @@
 # shallow,deep}; then the study section of the report. Regimes: "passing" (suspension contacts
 # off, --count-passing particles, default 1 000 000) and "contacts" (contacts everywhere,
 # --count-contacts, default 100 000). --depth-regimes: the regimes that also get the depth
-# runs (default: every one; docs/validation.md's study gave them to "passing" only, as each
-# doubles a regime's cost). --jobs: runs at a time (default: all cores). With
-# --short: 120 particles, 120 s and 3 seeds, a pipeline check of a minute or two.
+# runs (default: every one; docs/validation.md's study gave them to "passing" only, at 100 000
+# particles, as they double a regime's cost); --count-depth: their particle count (default:
+# the regime's). --jobs: runs at a time (default: all cores). With --short: 120 particles,
+# 120 s and 3 seeds, a pipeline check of a minute or two.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -47,6 +49,7 @@ count_passing=""
 count_contacts=""
 regimes=passing,contacts
 depth_regimes=passing,contacts
+count_depth=""
 jobs=$(nproc)
 
 while [ $# -gt 0 ]; do
@@ -62,6 +65,7 @@ while [ $# -gt 0 ]; do
     --count-contacts) count_contacts="$2"; shift 2 ;;
     --regimes) regimes="$2"; shift 2 ;;
     --depth-regimes) depth_regimes="$2"; shift 2 ;;
+    --count-depth) count_depth="$2"; shift 2 ;;
     --jobs) jobs="$2"; shift 2 ;;
     --short)
       short=true; count=120; end=120
@@ -142,7 +146,8 @@ if [ "$study" = true ]; then
       "$sedem" batch "${study_common[@]}" --out "$dir/${depth%%:*}" --overwrite \
         --set "instruments.buoyancy.depth_fraction=${depth#*:}" \
         --set "instruments.pipette.depth_fraction=${depth#*:}" \
-        --set instruments.hydrometer.enabled=false --set "run.end_time_s=$depth_end" ||
+        --set instruments.hydrometer.enabled=false --set "run.end_time_s=$depth_end" \
+        --set "sample.simulated_count=${count_depth:-$n}" ||
         echo "validate.sh: a run failed; the study leaves it out" >&2
     done
   done

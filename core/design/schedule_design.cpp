@@ -165,6 +165,18 @@ Path minimax_path(const std::vector<Reading>& candidates, std::size_t count, dou
   return path;
 }
 
+// A reading every minute over a schedule's times, at its depth: its first time, each whole
+// minute after it, its last.
+ReadingSchedule every_minute(const ReadingSchedule& schedule) {
+  ReadingSchedule s;
+  s.depth_fraction = schedule.depth_fraction;
+  const double first = schedule.times.front(), last = schedule.times.back();
+  s.times = {first};
+  for (double t = (std::floor(first / 60) + 1) * 60; t < last; t += 60) s.times.push_back(t);
+  s.times.push_back(last);
+  return s;
+}
+
 }  // namespace
 
 ScheduleScore score_readings(const std::vector<Reading>& readings, const TruthGrid& truth) {
@@ -328,13 +340,8 @@ ScheduleDesign design_schedule(const Scene& scene, const DesignOptions& options)
   design.truth = truth_grid(scene, low, high);
   design.standard_score = score_readings(standard_rows, design.truth);
 
-  // The floor: a reading every minute over the standard's times, at its depth.
-  design.floor.depth_fraction = design.standard.depth_fraction;
-  const double first = design.standard.times.front(), last = design.standard.times.back();
-  design.floor.times = {first};
-  for (double t = (std::floor(first / 60) + 1) * 60; t < last; t += 60)
-    design.floor.times.push_back(t);
-  design.floor.times.push_back(last);
+  const double first = design.standard.times.front();
+  design.floor = every_minute(design.standard);
   design.floor_score = score_readings(reader.readings(options.test, design.floor), design.truth);
 
   // The designed schedule: every depth tried (the hydrometer has one), the best kept.
@@ -370,6 +377,12 @@ ScheduleDesign design_schedule(const Scene& scene, const DesignOptions& options)
   if (design.designed.times.empty())
     throw std::runtime_error("no schedule of " + std::to_string(count) +
                              " readings spans the standard's diameters");
+  if (design.designed.depth_fraction != design.standard.depth_fraction &&
+      !std::isnan(design.designed.depth_fraction)) {
+    design.depth_floor = every_minute(design.designed);
+    design.depth_floor_score =
+        score_readings(reader.readings(options.test, design.depth_floor), design.truth);
+  }
   return design;
 }
 

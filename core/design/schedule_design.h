@@ -77,6 +77,11 @@ struct ScheduleDesign {
   TruthGrid truth;
   ReadingSchedule standard, designed, floor;
   ScheduleScore standard_score, designed_score, floor_score;
+  // The floor at the designed depth (a reading every minute over the designed schedule's
+  // times), when the sphere or the pipette is designed to read at another depth: the fair
+  // floor to set a designed schedule against. Empty times otherwise.
+  ReadingSchedule depth_floor;
+  ScheduleScore depth_floor_score;
   std::size_t schedules_searched = 0;  // candidate schedules' worth of work: pairs x depths
 };
 
