@@ -28,7 +28,9 @@
 # runs (default: every one; docs/validation.md's study gave them to "passing" only, at 100 000
 # particles, as they double a regime's cost); --count-depth: their particle count (default:
 # the regime's). --jobs: runs at a time (default: all cores). With --short: 120 particles,
-# 120 s and 3 seeds, a pipeline check of a minute or two.
+# 120 s and 3 seeds, a pipeline check of a minute or two. --study also designs a schedule for
+# every sample and test (scripts/design_study.sh, the "Recommended variations"), confirmed by a
+# DEM run at --count-passing particles.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -154,6 +156,11 @@ if [ "$study" = true ]; then
   mkdir -p "$out/study"
   "$report" study "${regime_args[@]}" --out "$out/study" --early-s "$early" --update "$doc" |
     tee "$out/study/verdicts.txt"
+  # The recommended variations: a designed schedule for every sample and test, confirmed by a
+  # DEM run at the passing regime's count.
+  design_args=(--dem-count "$count_passing" --out "$out/design" --sedem "$sedem" --doc "$doc")
+  if [ "$report_only" = true ]; then design_args+=(--report-only); fi
+  scripts/design_study.sh "${design_args[@]}"
   exit 0
 fi
 
