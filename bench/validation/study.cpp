@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 
@@ -25,6 +26,12 @@ std::vector<RunFolder> reference_only(std::vector<RunFolder> runs) {
   return runs;
 }
 
+std::string fixed_margin() {
+  char b[16];
+  std::snprintf(b, sizeof b, "%.1f", kPracticalMargin);
+  return b;
+}
+
 }  // namespace
 
 const char* to_string(StudyVerdict v) {
@@ -45,6 +52,7 @@ const char* to_string(StudyVerdict v) {
 
 std::string Decision::text() const {
   std::string s = to_string(verdict);
+  if (inside_margin) return s + ", inside ±" + fixed_margin() + " pp";
   if (verdict != StudyVerdict::inconclusive) return s;
   if (seeds == 0) return s + ": no seed has readings for it";
   if (seeds < 2) return s + ": needs at least 2 seeds";
@@ -56,11 +64,14 @@ Decision decide(const Interval& effect, double margin) {
   Decision d;
   d.seeds = effect.n;
   if (effect.n < 2 || std::isnan(effect.sd)) return d;
+  const bool inside = effect.low >= -margin && effect.high <= margin;
   if (effect.low > 0) {
     d.verdict = StudyVerdict::supports;
+    d.inside_margin = inside;
   } else if (effect.high < 0) {
     d.verdict = StudyVerdict::contradicts;
-  } else if (effect.low >= -margin && effect.high <= margin) {
+    d.inside_margin = inside;
+  } else if (inside) {
     d.verdict = StudyVerdict::no_effect;
   } else {
     // Either way out: a half-width below |mean| excludes zero, one below margin - |mean| fits

@@ -31,7 +31,11 @@ struct Decision {
   // When inconclusive: the seeds at which an interval of the same spread would decide it
   // (0: fewer than two seeds, or no count up to a million is enough).
   std::size_t seeds_to_decide = 0;
-  // "supports", "inconclusive: ~37 seeds would decide it", ...
+  // A supporting or contradicting interval that lies inside the practical margin too: a
+  // certain effect too small to matter. The rule, written first, keeps the verdict; the text
+  // says so.
+  bool inside_margin = false;
+  // "supports", "inconclusive: ~37 seeds would decide it", "contradicts, inside +-0.5 pp", ...
   std::string text() const;
 };
 

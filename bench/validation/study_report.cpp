@@ -125,7 +125,9 @@ std::string study_markdown(const std::vector<StudyRegime>& regimes) {
       "finds *no effect* when it lies within ±" +
       fixed(kPracticalMargin, 1) +
       " pp (the practical margin), and is otherwise *inconclusive*, with the number of seeds "
-      "at which an interval of the same spread would decide it.\n";
+      "at which an interval of the same spread would decide it. A supporting or contradicting "
+      "interval that also lies inside the margin keeps its verdict, marked *inside ±" +
+      fixed(kPracticalMargin, 1) + " pp*: a certain effect too small for a laboratory to see.\n";
   for (const auto& regime : regimes) {
     std::vector<std::vector<std::string>> rows;
     for (const auto& c : regime.conclusions) {

@@ -31,8 +31,12 @@ Interval interval(std::size_t n, double mean, double sd, double low, double high
 TEST(StudyRule, AnIntervalAboveZeroSupportsAndOneBelowContradicts) {
   EXPECT_EQ(decide(interval(5, 2, 1, 1, 3)).verdict, StudyVerdict::supports);
   EXPECT_EQ(decide(interval(4, -1, 0.5, -1.8, -0.2)).verdict, StudyVerdict::contradicts);
-  // Excluding zero wins over the margin: a small but certain effect is still an effect.
-  EXPECT_EQ(decide(interval(40, 0.2, 0.1, 0.1, 0.3)).text(), "supports");
+  // Excluding zero wins over the margin: a small but certain effect is still an effect, and
+  // the text says it is too small to matter.
+  EXPECT_EQ(decide(interval(40, 0.2, 0.1, 0.1, 0.3)).verdict, StudyVerdict::supports);
+  EXPECT_EQ(decide(interval(40, 0.2, 0.1, 0.1, 0.3)).text(), "supports, inside ±0.5 pp");
+  EXPECT_EQ(decide(interval(40, -0.2, 0.1, -0.3, -0.1)).text(), "contradicts, inside ±0.5 pp");
+  EXPECT_EQ(decide(interval(40, 0.6, 0.1, 0.4, 0.8)).text(), "supports");
   // Touching zero does not exclude it.
   EXPECT_EQ(decide(interval(5, 1, 1, 0, 2)).verdict, StudyVerdict::inconclusive);
 }
