@@ -6,7 +6,6 @@
 #include <memory>
 #include <stdexcept>
 
-#include "core/instruments/instrument_panel.h"
 #include "core/reference/reference_readings.h"
 #include "core/sample/grading_curve.h"
 #include "core/sample/sample_builder.h"
@@ -62,8 +61,8 @@ struct Gap {
 
 // The largest gap on the segment between two readings, over the grid points inside it and the
 // two readings' own diameters, within the grid's range.
-Gap segment_gap(const Reading& a, const Reading& b, const TruthGrid& truth,
-                const std::vector<double>& log_grid) {
+Gap segment_gap(const Reading& a, const Reading& b, const TruthGrid& truth) {
+  const auto& log_grid = truth.log_diameters;
   Gap gap;
   const double lo = std::max(std::min(a.diameter, b.diameter), truth.low);
   const double hi = std::min(std::max(a.diameter, b.diameter), truth.high);
@@ -89,12 +88,6 @@ Gap segment_gap(const Reading& a, const Reading& b, const TruthGrid& truth,
   return gap;
 }
 
-std::vector<double> log_of(const std::vector<double>& xs) {
-  std::vector<double> out(xs.size());
-  std::transform(xs.begin(), xs.end(), out.begin(), [](double x) { return std::log(x); });
-  return out;
-}
-
 // The readings of `count` chosen from `candidates` (ascending in time), the first at or after
 // `earliest` and reaching the range's top, the last reaching its bottom, with the least worst
 // error; among those (the worst is often one reading's own error, which every schedule
@@ -108,11 +101,10 @@ struct Path {
 Path minimax_path(const std::vector<Reading>& candidates, std::size_t count, double earliest,
                   const TruthGrid& truth) {
   const std::size_t n = candidates.size();
-  const auto log_grid = log_of(truth.diameters);
   std::vector<double> gap(n * n, kInfinity), area(n * n, kInfinity);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j) {
-      const Gap g = segment_gap(candidates[i], candidates[j], truth, log_grid);
+      const Gap g = segment_gap(candidates[i], candidates[j], truth);
       gap[i * n + j] = std::max(0.0, g.error);
       area[i * n + j] = g.area;
     }
@@ -151,12 +143,9 @@ Path minimax_path(const std::vector<Reading>& candidates, std::size_t count, dou
       solve([](double a, double b) { return std::max(a, b); }, gap, kInfinity);
   if (worst_end == n) return path;
   path.worst = worst;
-  auto [end, summed] =
-      solve([](double a, double b) { return a + b; }, area, worst * (1 + 1e-9) + 1e-12);
-  if (end == n) {  // cannot happen (the minimax path qualifies), but never lose the answer
-    end = worst_end;
-    solve([](double a, double b) { return std::max(a, b); }, gap, kInfinity);
-  }
+  // The minimax path itself qualifies, so this pass always ends somewhere.
+  std::size_t end =
+      solve([](double a, double b) { return a + b; }, area, worst * (1 + 1e-9) + 1e-12).first;
   path.picks.assign(count, n);
   for (std::size_t k = count; k-- > 0;) {
     path.picks[k] = end;
@@ -183,15 +172,14 @@ ScheduleScore score_readings(const std::vector<Reading>& readings, const TruthGr
   std::vector<Reading> sorted = readings;
   std::sort(sorted.begin(), sorted.end(),
             [](const Reading& a, const Reading& b) { return a.diameter < b.diameter; });
-  const auto log_grid = log_of(truth.diameters);
   Gap worst;
   double area = 0;
   for (std::size_t i = 0; i + 1 < sorted.size(); ++i) {
-    const Gap g = segment_gap(sorted[i], sorted[i + 1], truth, log_grid);
+    const Gap g = segment_gap(sorted[i], sorted[i + 1], truth);
     area += g.area;
     if (g.error > worst.error) worst = g;
   }
-  if (sorted.size() == 1) worst = segment_gap(sorted[0], sorted[0], truth, log_grid);
+  if (sorted.size() == 1) worst = segment_gap(sorted[0], sorted[0], truth);
   ScheduleScore score;
   score.worst_error = std::max(0.0, worst.error);
   score.worst_diameter = worst.diameter;
@@ -294,11 +282,8 @@ ScheduleReader::~ScheduleReader() = default;
 
 std::vector<Reading> ScheduleReader::readings(const std::string& test,
                                               const ReadingSchedule& schedule) const {
-  const Scene s = scene_for_schedule(state_->scene, test, schedule);
-  InstrumentPanel panel(s, state_->sample);
-  for (double t : panel.reading_times())
-    panel.observe(t, state_->reference.layer_fields(t, panel.layers(), s.fluid));
-  auto tests = panel.readings();
+  auto tests = reference_readings(scene_for_schedule(state_->scene, test, schedule), state_->sample,
+                                  state_->reference);
   if (tests.size() != 1) throw std::logic_error("ScheduleReader: no " + test);
   return std::move(tests.front().rows);
 }
@@ -317,7 +302,10 @@ TruthGrid truth_grid(const Scene& scene, double low, double high) {
   std::sort(grid.diameters.begin(), grid.diameters.end());
   grid.diameters.erase(std::unique(grid.diameters.begin(), grid.diameters.end()),
                        grid.diameters.end());
-  for (double d : grid.diameters) grid.percent.push_back(grid.percent_at(d));
+  for (double d : grid.diameters) {
+    grid.percent.push_back(grid.percent_at(d));
+    grid.log_diameters.push_back(std::log(d));
+  }
   return grid;
 }
 

@@ -41,6 +41,7 @@ struct TruthGrid {
   double low = 0, high = 0;                  // m, the range
   std::vector<double> diameters;             // m, ascending, the range's ends included
   std::vector<double> percent;               // the true percent finer at each
+  std::vector<double> log_diameters;         // ln of each, where the curves are linear
   std::function<double(double)> percent_at;  // the true percent finer at any diameter
 };
 

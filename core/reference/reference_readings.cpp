@@ -14,7 +14,11 @@ ReferenceOptions reference_options(const Scene& scene) {
 }
 
 std::vector<TestReadings> reference_readings(const Scene& scene, const Sample& sample) {
-  const ReferenceSolution reference = make_reference(scene, sample, reference_options(scene));
+  return reference_readings(scene, sample, make_reference(scene, sample, reference_options(scene)));
+}
+
+std::vector<TestReadings> reference_readings(const Scene& scene, const Sample& sample,
+                                             const ReferenceSolution& reference) {
   InstrumentPanel panel(scene, sample);
   for (double t : panel.reading_times())
     panel.observe(t, reference.layer_fields(t, panel.layers(), scene.fluid));

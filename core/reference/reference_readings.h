@@ -15,5 +15,9 @@ ReferenceOptions reference_options(const Scene& scene);
 // Every enabled test of the scene applied to the reference solution at its times, with the
 // same instrument models as the DEM run.
 std::vector<TestReadings> reference_readings(const Scene& scene, const Sample& sample);
+// The same from a reference already solved (its fronts cost O(sizes^2)), so that many
+// schedules can read one solution.
+std::vector<TestReadings> reference_readings(const Scene& scene, const Sample& sample,
+                                             const ReferenceSolution& reference);
 
 }  // namespace sedem
