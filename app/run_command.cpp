@@ -22,6 +22,7 @@
 #include "app/stop_signals.h"
 #include "app/test_outputs.h"
 #include "core/sample/sample_builder.h"
+#include "core/run/stage_setups.h"
 #include "core/scene/scene_loader.h"
 #include "render/series_reader.h"
 
@@ -193,7 +194,7 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   }
   ctx.record_started = true;
 
-  Engine engine(scene, sample);  // a copy: the observers need the sample too
+  Engine engine(engine_setup(scene), sample);  // a copy: the observers need the sample too
   ObserverStart start;
   int status = exit_code::ok;
   auto finish_failed = [&](int code, const std::string& message) {

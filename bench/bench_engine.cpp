@@ -24,6 +24,7 @@
 
 #include "core/engine/engine.h"
 #include "core/physics/stokes.h"
+#include "core/run/stage_setups.h"
 #include "core/scene/scene_loader.h"
 
 namespace {
@@ -116,7 +117,7 @@ double terminal_energy(const Engine& e) {
 
 Outcome run(const Scene& scene, Sample sample, double duration, int samples) {
   Outcome o;
-  Engine engine(scene, std::move(sample));
+  Engine engine(engine_setup(scene), std::move(sample));
   const double scale = terminal_energy(engine);
   const auto t0 = Clock::now();
   try {
@@ -209,7 +210,7 @@ int main(int argc, char** argv) {
       Scene scene = base_scene("exponential");
       Sample sample =
           kind == "dilute" ? dilute(scene, n, 2.5e-6, 70e-6, 1) : bed(scene, n, 10e-6, 1, 1);
-      Engine engine(scene, std::move(sample));
+      Engine engine(engine_setup(scene), std::move(sample));
       engine.step(1e9);  // warm-up: first-touch of every buffer
       const auto steps = std::max<std::int64_t>(3, std::int64_t(target / double(n)));
       const auto before = engine.stats();
@@ -297,13 +298,13 @@ int main(int argc, char** argv) {
     rs.integrator.adaptive = false;
     rs.integrator.step_factor = 0.01;
     Sample s0 = dilute(rs, 400, 5e-6, 70e-6, 8);
-    Engine ref(rs, s0);
+    Engine ref(engine_setup(rs), s0);
     ref.advance_to(t);
     const double fall = stokes::terminal_velocity(70e-6, 2500, Fluid{}) * t;
     for (double factor : {1000.0, 100.0, 10.0, 1.0}) {
       Scene fs = base_scene("exponential");
       fs.integrator.fast_step_factor = factor;
-      Engine fast(fs, s0);
+      Engine fast(engine_setup(fs), s0);
       fast.advance_to(t);
       double err = 0;
       for (std::size_t i = 0; i < s0.particles.size(); ++i)

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-#include "core/engine/engine.h"
+#include "core/model/snapshot.h"
 #include "core/model/cylinder.h"
 #include "render/mass_bands.h"
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "core/engine/engine.h"
+#include "core/instruments/granulometry.h"
 #include "core/model/fluid.h"
 #include "render/plot.h"
 

@@ -7,7 +7,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
-#include "core/engine/engine.h"
+#include "core/model/snapshot.h"
 #include "render/xml_series.h"
 
 namespace sedem::render {

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/engine/engine.h"
+#include "core/model/snapshot.h"
 
 namespace sedem::render {
 

@@ -28,8 +28,8 @@ InstabilityError::InstabilityError(std::uint32_t id, double t, std::string what,
 
 namespace {
 
-ForceModel force_model(const Scene& scene, double particle_density) {
-  const ForcesConfig& f = scene.forces;
+ForceModel force_model(const EngineSetup& setup, double particle_density) {
+  const ForcesConfig& f = setup.forces;
   ForceModel m;
   m.weight = f.weight;
   m.buoyancy = f.buoyancy;
@@ -47,28 +47,11 @@ ForceModel force_model(const Scene& scene, double particle_density) {
   m.lubrication_intensity = f.lubrication_intensity;
   m.lubrication_range = f.lubrication_range;
   m.particle_density = particle_density;
-  m.fluid_density = scene.fluid.density;
-  m.viscosity = scene.fluid.viscosity;
-  m.gravity = scene.fluid.gravity;
-  m.half_width = scene.cylinder.half_width();
+  m.fluid_density = setup.fluid.density;
+  m.viscosity = setup.fluid.viscosity;
+  m.gravity = setup.fluid.gravity;
+  m.half_width = setup.cylinder.half_width();
   return m;
-}
-
-// The height below which nothing is measured: the bottom of the hydrometer's bulb at its
-// deepest reading (effective depth 16.29 cm at R = 0 plus half the 14 cm bulb), the buoyancy
-// sphere, the pipette's sample (a sphere of its volume), less a 1 cm margin.
-double lowest_measured_height(const Scene& scene) {
-  const auto& in = scene.instruments;
-  const double h = scene.cylinder.height;
-  double depth = 0;
-  if (in.hydrometer) depth = std::max(depth, 0.1629 + 0.07);
-  if (in.buoyancy)
-    depth = std::max(depth, in.buoyancy_depth_fraction * h + 0.5 * in.sphere_diameter);
-  if (in.pipette) {
-    const double r = std::cbrt(3 * in.pipette_volume / (4 * std::numbers::pi));
-    depth = std::max(depth, in.pipette_depth_fraction * h + r);
-  }
-  return h - depth - 0.01;
 }
 
 constexpr char kMagic[8] = {'S', 'E', 'D', 'E', 'M', 'C', 'K', '1'};
@@ -83,19 +66,20 @@ static double list_margin(const IntegratorConfig& c) {
   return c.method == "reference" ? 3.0 : std::max(3.0, 4.0 * c.crossing_fraction);
 }
 
-Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::move(sample)) {
+Engine::Engine(const EngineSetup& setup, Sample sample)
+    : setup_(setup), sample_(std::move(sample)) {
   const Particles& p = sample_.particles;
   const std::size_t n = p.size();
-  threads_ = scene_.integrator.threads > 0 ? int(scene_.integrator.threads) : omp_get_max_threads();
+  threads_ = setup_.integrator.threads > 0 ? int(setup_.integrator.threads) : omp_get_max_threads();
   // Below a few thousand particles a step takes microseconds and forking threads costs more.
   if (n < 2048) threads_ = 1;
-  model_ = force_model(scene_, sample_.particle_density);
+  model_ = force_model(setup_, sample_.particle_density);
   // Local time stepping is serial (its work is in syncs taken one at a time, in time order).
   // It needs no force pass, so not with lubrication.
-  local_ = scene_.integrator.method == "exponential" && scene_.integrator.local_steps &&
+  local_ = setup_.integrator.method == "exponential" && setup_.integrator.local_steps &&
            !model_.lubrication;
   if (local_) threads_ = 1;
-  if (scene_.integrator.method == "reference")
+  if (setup_.integrator.method == "reference")
     model_.skin = 0.25;
   else
     model_.contact_forces = false;  // the exponential integrator projects contacts
@@ -119,23 +103,23 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
     dmax = std::max(dmax, p.diameter[i]);
   }
   const double reach = model_.lubrication_reach();
-  margin_ = list_margin(scene_.integrator);
+  margin_ = list_margin(setup_.integrator);
   for (std::size_t i = 0; i < n; ++i)
     search_[i] = 0.5 * state_.diameter[i] * (1 + reach + model_.skin + margin_);
   if (n == 0) dmin = dmax = 1e-6;
 
-  const Cylinder& cyl = scene_.cylinder;
+  const Cylinder& cyl = setup_.cylinder;
   grid_.configure(dmin * (1 + reach + model_.skin + margin_),
                   dmax * (1 + reach + model_.skin + margin_), cyl.half_width(), cyl.height,
                   threads_);
-  voidage_.configure(scene_.forces.voidage_cell, cyl.half_width(), cyl.height, cyl.slab_thickness(),
-                     scene_.forces.min_voidage, threads_);
+  voidage_.configure(setup_.forces.voidage_cell, cyl.half_width(), cyl.height, cyl.slab_thickness(),
+                     setup_.forces.min_voidage, threads_);
   pass_.configure(model_, threads_);
 
-  const Fluid& fluid = scene_.fluid;
+  const Fluid& fluid = setup_.fluid;
   IntegratorContext ctx;
   ctx.model = &model_;
-  ctx.drag = DragEvaluator{&model_, &voidage_, di_felice_tail_re(scene_.forces.min_voidage)};
+  ctx.drag = DragEvaluator{&model_, &voidage_, di_felice_tail_re(setup_.forces.min_voidage)};
   ctx.threads = threads_;
   ctx.min_response_time = stokes::response_time(dmin, model_.particle_density, fluid, 0.95);
   ctx.min_terminal_speed = stokes::terminal_velocity(dmin, model_.particle_density, fluid);
@@ -151,17 +135,15 @@ Engine::Engine(const Scene& scene, Sample sample) : scene_(scene), sample_(std::
   ctx.grains = n;
   ctx.members_only = local_;
   drag_ = ctx.drag;
-  integrator_ = make_integrator(scene_.integrator, ctx);
+  integrator_ = make_integrator(setup_.integrator, ctx);
   freeze_height_ =
-      scene_.integrator.freeze_settled && model_.contact ? lowest_measured_height(scene_) : 0.0;
+      setup_.integrator.freeze_settled && model_.contact ? setup_.lowest_measured_height : 0.0;
   // Without the force pass, the freeze check reads the contacts the projection marks.
   if (!pass_needed_ && freeze_height_ > 0) forces_.stiffness.resize(n);
   // Below the lowest instrument nothing rises back into any instrument's reach: a grain that
   // falls there can leave the dynamics (local steps; only where some instrument reads).
-  const auto& in = scene_.instruments;
-  if (local_ && model_.contact && scene_.integrator.retire_below &&
-      (in.hydrometer || in.buoyancy || in.pipette))
-    retire_height_ = std::max(0.0, lowest_measured_height(scene_));
+  if (local_ && model_.contact && setup_.integrator.retire_below && setup_.instruments_read)
+    retire_height_ = std::max(0.0, setup_.lowest_measured_height);
   if (local_) {
     start_local();
     return;
@@ -312,7 +294,7 @@ bool Engine::moved_beyond_margin() {
 // A particle is at rest when it touches something and moves at less than 1e-3 of its
 // terminal speed; below every instrument nothing it could still do is measured.
 void Engine::freeze_resting() {
-  const Fluid& fluid = scene_.fluid;
+  const Fluid& fluid = setup_.fluid;
   std::size_t frozen = 0;
   for (std::size_t i = 0; i < state_.size(); ++i) {
     if (!state_.frozen[i] && state_.y[i] < freeze_height_ && forces_.stiffness[i] > 0) {
@@ -436,9 +418,9 @@ void Engine::load_checkpoint(const std::string& path) {
       throw std::runtime_error("damaged checkpoint " + path + ": " + what);
     };
     if (!in) bad("truncated");
-    if (!std::isfinite(time_) || time_ < 0 || time_ > scene_.end_time * (1 + 1e-9))
+    if (!std::isfinite(time_) || time_ < 0 || time_ > setup_.end_time * (1 + 1e-9))
       bad("time " + std::to_string(time_) + " s is outside the run (0 to " +
-          std::to_string(scene_.end_time) + " s)");
+          std::to_string(setup_.end_time) + " s)");
     if (stats_.steps < 0 || !std::isfinite(stats_.particle_steps) || stats_.particle_steps < 0)
       bad("negative step counts");
     // Sample indices: all of them, or with local steps those of the members.

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/engine/box_registry.h"
+#include "core/engine/engine_setup.h"
 #include "core/engine/engine_state.h"
 #include "core/engine/force_pass.h"
 #include "core/engine/forces.h"
@@ -23,35 +24,16 @@
 #include "core/engine/neighbour_grid.h"
 #include "core/engine/pair_history.h"
 #include "core/engine/voidage_grid.h"
+#include "core/model/engine_stats.h"
 #include "core/model/particles.h"
 #include "core/model/sample.h"
-#include "core/scene/scene.h"
+#include "core/model/snapshot.h"
 
 namespace sedem {
 
-// An immutable copy of the particle state at one time, handed to observers.
-struct Snapshot {
-  double time = 0;
-  Particles particles;
-};
-
-struct EngineStats {
-  std::int64_t steps = 0;
-  double particle_steps = 0;     // sum over steps of the particles integrated (not frozen)
-  double last_step = 0;          // s
-  std::size_t contacts = 0;      // particles touching something at the last step
-  std::size_t frozen = 0;        // particles frozen in the bed
-  double max_overlap_ratio = 0;  // largest overlap / smaller radius seen so far
-  std::int64_t list_builds = 0;  // candidate lists built (Verlet rebuilds), the first included
-  // Local time stepping: coasting windows taken, and grains that left or joined the common step.
-  std::int64_t windows = 0, engaged = 0, released = 0;
-  std::size_t members = 0;  // grains on the common step at the last step (frozen included)
-  std::size_t retired = 0;  // grains that fell below every instrument onto the coarse bed
-};
-
 class Engine {
  public:
-  Engine(const Scene& scene, Sample sample);
+  Engine(const EngineSetup& setup, Sample sample);
   ~Engine();
 
   double time() const { return time_; }
@@ -118,7 +100,7 @@ class Engine {
   void rebuild_lists();
   bool moved_beyond_margin();
 
-  Scene scene_;
+  EngineSetup setup_;
   mutable Sample sample_;
   mutable std::int64_t synced_step_ = -1;
   EngineState state_;

@@ -104,7 +104,7 @@ bool Engine::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool 
   const FreeFlight f = flight_of(id, p);
   const double r = 0.5 * sample_.particles.diameter[id], pad = r * (1 + kSkin);
   const double hw = model_.half_width;
-  double window = scene_.integrator.max_coast;
+  double window = setup_.integrator.max_coast;
   const double gap = std::hypot(f.vx - f.ux, f.vy - f.uy), terminal = std::hypot(f.ux, f.uy);
   // Di Felice drag depends on the speed: far from its terminal velocity a grain's drag is
   // taken again after a few response times, as the global step would.
@@ -145,7 +145,7 @@ bool Engine::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool 
   // bounded by the voidage grid instead: the drag is taken anew about once per cell crossed.
   if (speed > 0) window = std::min(window, travel_ / speed);
   const double shortest =
-      speed > 0 ? std::min(window, scene_.integrator.crossing_fraction * r / speed) : window;
+      speed > 0 ? std::min(window, setup_.integrator.crossing_fraction * r / speed) : window;
   near_.clear();
   boxes_.overlapping(box(window), id, [&](std::uint32_t j) {
     if (!passes(j)) near_.push_back(j);
@@ -479,14 +479,14 @@ void Engine::start_local() {
   member_.assign(n, kNoMember);
   deposit_cell_.assign(n, 0);
   syncs_.clear();
-  const Cylinder& cyl = scene_.cylinder;
+  const Cylinder& cyl = setup_.cylinder;
   double dmax = 0;
   for (double d : s.diameter) dmax = std::max(dmax, d);
   // Cells about twice the mean spacing: a box spans a few of them and each holds a few boxes.
   const double spacing =
       std::sqrt(2 * cyl.half_width() * cyl.height / double(std::max<std::size_t>(n, 1)));
   travel_ = model_.suspension_contacts ? kTravel * spacing
-                                       : std::max(kTravel * spacing, scene_.forces.voidage_cell);
+                                       : std::max(kTravel * spacing, setup_.forces.voidage_cell);
   registry_cell_ = std::max(spacing, 4 * dmax);
   land_y_.assign(n, 0.0);
   ahead_slot_.assign(n, kNoMember);
@@ -541,7 +541,7 @@ void Engine::step_local(double limit) {
     return m;
   };
   std::size_t moving = count_moving();
-  double dt = moving ? integrator_->next_step(facts_) : scene_.integrator.max_step;
+  double dt = moving ? integrator_->next_step(facts_) : setup_.integrator.max_step;
   double target = time_ + dt >= limit ? limit : time_ + dt;
   // Syncs due within the step, in time order. A grain that cannot coast on joins the members
   // at their time, before they step, where its last window put it then (coasting_at). So no
@@ -595,7 +595,7 @@ void Engine::step_local(double limit) {
     integrator_->refresh_step(state_);
     members_changed_ = false;
     moving = count_moving();
-    dt = moving ? integrator_->next_step(facts_) : scene_.integrator.max_step;
+    dt = moving ? integrator_->next_step(facts_) : setup_.integrator.max_step;
     target = time_ + dt >= limit ? limit : time_ + dt;
     // Syncs still due before the new target are taken in the next round: no window may end
     // unlooked-at while the members step past it.
@@ -744,7 +744,7 @@ void Engine::load_local(std::istream& in) {
     if (id >= kind_.size() || (kind_[id] != kMoving && kind_[id] != kFrozen))
       throw std::runtime_error("damaged checkpoint: a member is not marked as one");
   if (model_.contact) {
-    const Cylinder& cyl = scene_.cylinder;
+    const Cylinder& cyl = setup_.cylinder;
     boxes_.configure(registry_cell_, cyl.half_width(), cyl.height, kind_.size());
     for (std::uint32_t id = 0; id < kind_.size(); ++id)
       if (kinds[id] != BoxRegistry::kNone) boxes_.set(id, boxes[id], kinds[id]);

@@ -40,4 +40,13 @@ struct InstrumentsConfig {
 
 void describe(InstrumentsConfig& config, Schema& schema);
 
+// The height (m above the bottom of a column `height` tall) below which none of the enabled
+// instruments reads, less a 1 cm margin: the bottom of the hydrometer's bulb at its deepest
+// reading (effective depth 16.29 cm at R = 0 plus half the 14 cm bulb), the buoyancy sphere,
+// the pipette's sample (a sphere of its volume).
+double lowest_measured_height(const InstrumentsConfig& config, double height);
+
+// Whether any of the three tests is enabled.
+bool any_instrument(const InstrumentsConfig& config);
+
 }  // namespace sedem

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "core/engine/engine.h"
+#include "core/model/snapshot.h"
 
 namespace sedem {
 

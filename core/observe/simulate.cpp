@@ -1,4 +1,5 @@
 #include "core/observe/simulate.h"
+#include "core/run/stage_setups.h"
 
 #include <algorithm>
 #include <chrono>
@@ -10,7 +11,7 @@ SimulationRun simulate(const Scene& scene, Sample sample, bool keep_last) {
   InstrumentObserver instruments(scene, sample);
   SimulationRun run;
   run.particles = sample.particles.size();
-  Engine engine(scene, std::move(sample));
+  Engine engine(engine_setup(scene), std::move(sample));
   for (double t : instruments.wanted_times()) {
     engine.advance_to(t);
     instruments.observe(engine.time(), engine.particles());

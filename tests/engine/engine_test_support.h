@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/engine/engine.h"
+#include "core/run/stage_setups.h"
 #include "core/scene/scene.h"
 
 namespace sedem::test {

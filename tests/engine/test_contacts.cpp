@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/engine/forces.h"
+#include "core/run/stage_setups.h"
 #include "tests/engine/engine_test_support.h"
 
 namespace sedem {
@@ -25,7 +26,7 @@ TEST(EngineContact, GrainRestsOnTheBottom) {
   for (const char* method : {"exponential", "reference"}) {
     Scene scene = scene_with("stokes", method);
     const double d = 50e-6;
-    Engine engine(scene, sample_of({{0, 0.5 * d + 2e-6, d}}));
+    Engine engine(engine_setup(scene), sample_of({{0, 0.5 * d + 2e-6, d}}));
     // ~30 drag response times after landing; the reference bounces (restitution 1) until
     // the drag has taken the energy.
     engine.advance_to(std::string(method) == "reference" ? 0.012 : 0.2);
@@ -53,7 +54,7 @@ RestingAfter resting_grain_frozen(bool local_steps, double t) {
   scene.integrator.freeze_settled = true;
   scene.integrator.local_steps = local_steps;
   const double d = 50e-6;
-  Engine engine(scene, sample_of({{0, 0.5 * d + 2e-6, d}, {0.01, 0.4, d}}));
+  Engine engine(engine_setup(scene), sample_of({{0, 0.5 * d + 2e-6, d}, {0.01, 0.4, d}}));
   EXPECT_GT(engine.freeze_height(), 0.1);
   EXPECT_LT(engine.freeze_height(), 0.4);
   engine.advance_to(t);
@@ -95,7 +96,7 @@ TEST(EngineContact, HeadOnCollisionMatchesTheSpring) {
   scene.integrator.max_step = 1e-10;
   scene.integrator.adaptive = false;
   const double d = 20e-6, v0 = 1e-3, gap = 1e-8;
-  Engine engine(scene,
+  Engine engine(engine_setup(scene),
                 sample_of({{-0.5 * d - gap, 0.2, d, v0, 0}, {0.5 * d + gap, 0.2, d, -v0, 0}}));
   const double m = 2500 * std::numbers::pi / 6 * d * d * d;
   const double duration = std::numbers::pi * std::sqrt(m / (2 * scene.forces.stiffness_normal));
@@ -158,7 +159,7 @@ TEST(EngineContact, SlidingContactTransfersMuTimesTheNormalImpulse) {
   scene.integrator.max_step = 2e-11;
   scene.integrator.adaptive = false;
   const double d = 20e-6, v = 0.1;
-  Engine engine(scene, sample_of({{0, 0.2, d, v, 0}, {0, 0.2 + d - 1e-9, d, -v, 0}}));
+  Engine engine(engine_setup(scene), sample_of({{0, 0.2, d, v, 0}, {0, 0.2 + d - 1e-9, d, -v, 0}}));
   engine.advance_to(2e-8);
   const auto& p = engine.particles();
   const double tangential = v - p.vx[0], normal = -p.vy[0];  // impulses / m on grain 0
@@ -185,7 +186,7 @@ TEST(EngineContact, PairForcesSumToZero) {
     const auto grains = test::scattered(
         150, -200e-6, 200e-6, 0.2, 0.2 + 400e-6,
         [](int k) { return k % 10 == 0 ? 70e-6 : 2.5e-6 + k % 7 * 1e-6; }, 3, 0.5);
-    Engine engine(scene, sample_of(grains));
+    Engine engine(engine_setup(scene), sample_of(grains));
     engine.advance_to(5e-8);
     const auto& p = engine.particles();
     double px = 0, py = 0, scale = 0;
@@ -216,7 +217,7 @@ TEST(EngineContact, TouchingPairsFallTogether) {
   const double terminal = net_weight(d) / c;
   for (const auto& pair : {std::vector<Grain>{{-0.5 * d, y, d}, {0.5 * d - tight, y, d}},
                            std::vector<Grain>{{0, y, d}, {0, y + d - tight, d}}}) {
-    Engine engine(scene, sample_of(pair));
+    Engine engine(engine_setup(scene), sample_of(pair));
     engine.advance_to(0.05);
     const auto& p = engine.particles();
     for (int i : {0, 1}) EXPECT_NEAR(p.vy[i], -terminal, 1e-2 * terminal) << pair[1].x;
@@ -224,7 +225,8 @@ TEST(EngineContact, TouchingPairsFallTogether) {
   }
   // 60 um on top of 20 um: alone they would fall at 9:1, together they stay in contact.
   const double big = 60e-6, small = 20e-6;
-  Engine engine(scene, sample_of({{0, y, small}, {0, y + 0.5 * (big + small) - 1e-9, big}}));
+  Engine engine(engine_setup(scene),
+                sample_of({{0, y, small}, {0, y + 0.5 * (big + small) - 1e-9, big}}));
   engine.advance_to(0.05);
   const double together =
       (net_weight(big) + net_weight(small)) / (3 * std::numbers::pi * 1e-3 * (big + small));
@@ -248,7 +250,7 @@ double worst_overlap_in_pile(double crossing_fraction, bool local_steps = false)
   scene.integrator.local_steps = local_steps;
   const auto grains = test::scattered(
       300, -200e-6, 200e-6, 50e-6, 1.5e-3, [](int k) { return 20e-6 + k % 5 * 5e-6; }, 7);
-  Engine engine(scene, sample_of(grains));
+  Engine engine(engine_setup(scene), sample_of(grains));
   engine.advance_to(6.0);
   const auto& p = engine.particles();
   double worst = 0, top = 0;

@@ -36,7 +36,7 @@ std::vector<test::Grain> grain_on_grain() {
 TEST(Friction, AGrainRollsDownAnotherAsWithTheReferenceIntegrator) {
   const double t = 2e-3;
   auto run = [&](const std::string& method, double mu) {
-    Engine engine(friction_scene(method, mu), sample_of(grain_on_grain()));
+    Engine engine(engine_setup(friction_scene(method, mu)), sample_of(grain_on_grain()));
     engine.advance_to(t);
     return engine.particles();
   };
@@ -71,7 +71,7 @@ struct PileShape {
 };
 
 PileShape pile(const std::string& method, double mu, double crossing) {
-  Engine engine(friction_scene(method, mu, crossing), sample_of(small_pile()));
+  Engine engine(engine_setup(friction_scene(method, mu, crossing)), sample_of(small_pile()));
   engine.advance_to(0.02);
   const auto& p = engine.particles();
   return {p.x[2], p.y[5]};
@@ -100,11 +100,11 @@ TEST(Friction, ResumesBitForBit) {
   const Scene scene = friction_scene("exponential", 0.5, 0.1);
   const std::string checkpoint =
       (std::filesystem::temp_directory_path() / "sedem_friction_test.ckpt").string();
-  Engine first(scene, sample_of(small_pile()));
+  Engine first(engine_setup(scene), sample_of(small_pile()));
   first.advance_to(0.005);
   first.save_checkpoint(checkpoint);
   first.advance_to(0.01);
-  Engine resumed(scene, sample_of(small_pile()));
+  Engine resumed(engine_setup(scene), sample_of(small_pile()));
   resumed.load_checkpoint(checkpoint);
   resumed.advance_to(0.01);
   const Particles& a = first.particles();

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "core/physics/stokes.h"
+#include "core/run/stage_setups.h"
 #include "tests/engine/engine_test_support.h"
 
 namespace sedem {
@@ -45,7 +46,7 @@ TEST(ExponentialIntegrator, ConvergesToTheReferenceAsTheStepShrinks) {
   Scene ref_scene = scene_with("di_felice", "reference");
   ref_scene.integrator.adaptive = false;
   ref_scene.integrator.step_factor = 0.01;
-  Engine reference(ref_scene, sample_of(cloud()));
+  Engine reference(engine_setup(ref_scene), sample_of(cloud()));
   reference.advance_to(t);
   // The distance the fastest grain falls, to scale errors.
   const double scale = stokes::terminal_velocity(60e-6, 2500, ref_scene.fluid) * t;
@@ -55,7 +56,7 @@ TEST(ExponentialIntegrator, ConvergesToTheReferenceAsTheStepShrinks) {
     Scene scene = scene_with("di_felice", "exponential");
     scene.integrator.fast_step_factor = factor;
     scene.integrator.local_steps = false;  // the common step bounded by the factor
-    Engine fast(scene, sample_of(cloud()));
+    Engine fast(engine_setup(scene), sample_of(cloud()));
     fast.advance_to(t);
     const double error = max_position_error(fast, reference, scale);
     EXPECT_LT(error, 0.5 * previous) << factor;
@@ -75,7 +76,7 @@ TEST(ExponentialIntegrator, StepGrowsOnceTheCoarseGrainHasSettled) {
   scene.integrator.freeze_settled = false;
   scene.integrator.crossing_fraction = 0.5;
   const double large = 60e-6, small = 5e-6;
-  Engine engine(scene,
+  Engine engine(engine_setup(scene),
                 sample_of({{0, 0.5 * large + 2e-4, large, 0, 0, 1}, {0.01, 0.4, small, 0, 0, 1}}));
   const auto settling = [&](double d) {
     return stokes::terminal_velocity(d, 2500, scene.fluid) / 0.96;
@@ -95,7 +96,7 @@ TEST(Engine, SameSeedAndThreadsGiveTheSameBits) {
   for (const char* method : {"reference", "exponential"}) {
     Scene scene = scene_with("di_felice", method, 2);
     scene.forces.lubrication = true;
-    Engine a(scene, sample_of(cloud())), b(scene, sample_of(cloud()));
+    Engine a(engine_setup(scene), sample_of(cloud())), b(engine_setup(scene), sample_of(cloud()));
     a.advance_to(2e-3);
     b.advance_to(2e-3);
     ASSERT_EQ(a.stats().steps, b.stats().steps);
@@ -115,7 +116,7 @@ TEST(Engine, TwoThreadRunsGiveTheSameBits) {
   scene.integrator.local_steps = false;  // local steps are serial: one thread whatever is asked
   const auto grains = test::scattered(
       6000, -0.03, 0.03, 0.0, 0.004, [](int k) { return 5e-6 + 1e-6 * (k % 60); }, 21);
-  Engine a(scene, sample_of(grains)), b(scene, sample_of(grains));
+  Engine a(engine_setup(scene), sample_of(grains)), b(engine_setup(scene), sample_of(grains));
   ASSERT_EQ(a.threads(), 2);
   a.advance_to(0.02);
   b.advance_to(0.02);
@@ -134,7 +135,7 @@ TEST(Engine, BlowUpIsReportedNotSilent) {
   scene.forces.contact = false;
   scene.integrator.step_factor = 3.0;  // dt = 3 t_tr(95 %) ~ 9 tau
   scene.integrator.adaptive = false;
-  Engine engine(scene, sample_of({{0, 0.4, 70e-6}, {0.01, 0.4, 10e-6}}));
+  Engine engine(engine_setup(scene), sample_of({{0, 0.4, 70e-6}, {0.01, 0.4, 10e-6}}));
   try {
     engine.advance_to(1.0);
     FAIL() << "no instability reported";
@@ -153,7 +154,7 @@ TEST(ReferenceIntegrator, StepGrowsAfterTerminalVelocity) {
   Scene scene = scene_with("stokes", "reference");
   scene.forces.contact = false;
   const double d = 10e-6;
-  Engine engine(scene, sample_of({{0, 0.4, d}}));
+  Engine engine(engine_setup(scene), sample_of({{0, 0.4, d}}));
   engine.advance_to(1e-3);
   const double tau = stokes::relaxation_time(d, 2500, scene.fluid);
   const double first = 0.1 * stokes::response_time(d, 2500, scene.fluid, 0.95);

@@ -9,6 +9,7 @@
 #include "core/engine/box_registry.h"
 #include "core/engine/free_flight.h"
 #include "core/physics/stokes.h"
+#include "core/run/stage_setups.h"
 #include "engine_test_support.h"
 
 namespace sedem {
@@ -84,7 +85,7 @@ TEST(LocalSteps, FreeGrainsEndWhereTheGlobalStepPutsThem) {
   global.integrator.local_steps = false;
   Scene local = scene_with("stokes", "exponential");
   local.integrator.local_steps = true;
-  Engine a(global, sample_of(grains)), b(local, sample_of(grains));
+  Engine a(engine_setup(global), sample_of(grains)), b(engine_setup(local), sample_of(grains));
   a.advance_to(20.0);
   b.advance_to(20.0);
   const double fall = stokes::terminal_velocity(65e-6, 2500, Fluid{}) * 20.0;
@@ -107,7 +108,7 @@ TEST(LocalSteps, ACoarseGrainNeverPassesThroughAFineOne) {
   Scene scene = scene_with("stokes", "exponential");
   scene.integrator.local_steps = true;
   const double coarse = 60e-6, fine = 10e-6;
-  Engine engine(scene, sample_of({{0, 0.2, coarse}, {0, 0.19, fine}}));
+  Engine engine(engine_setup(scene), sample_of({{0, 0.2, coarse}, {0, 0.19, fine}}));
   const double u = stokes::terminal_velocity(coarse, 2500, Fluid{});
   double worst = 0;
   for (int k = 1; k <= 200; ++k) {
@@ -128,9 +129,9 @@ TEST(LocalSteps, WithoutSuspensionContactsACoarseGrainPassesAFineOne) {
   scene.integrator.local_steps = true;
   scene.forces.suspension_contacts = false;
   const double coarse = 60e-6, fine = 10e-6;
-  Engine both(scene, sample_of({{0, 0.2, coarse}, {0, 0.19, fine}}));
-  Engine coarse_alone(scene, sample_of({{0, 0.2, coarse}}));
-  Engine fine_alone(scene, sample_of({{0, 0.19, fine}}));
+  Engine both(engine_setup(scene), sample_of({{0, 0.2, coarse}, {0, 0.19, fine}}));
+  Engine coarse_alone(engine_setup(scene), sample_of({{0, 0.2, coarse}}));
+  Engine fine_alone(engine_setup(scene), sample_of({{0, 0.19, fine}}));
   const double u = stokes::terminal_velocity(coarse, 2500, Fluid{});
   const double end = 0.02 / u;  // 2 cm of the coarse grain's fall
   for (Engine* e : {&both, &coarse_alone, &fine_alone}) e->advance_to(end);
@@ -157,7 +158,7 @@ TEST(LocalSteps, KeepTheirPromiseInACrowdedSuspension) {
   scene.integrator.local_steps = true;
   scene.integrator.freeze_settled = true;
   const double hw = scene.cylinder.half_width();
-  Engine engine(scene, sample_of(crowd(-0.3 * hw, 0.3 * hw, 0.0005, 0.012)));
+  Engine engine(engine_setup(scene), sample_of(crowd(-0.3 * hw, 0.3 * hw, 0.0005, 0.012)));
   std::int64_t engaged = 0;
   while (engine.time() < 0.5) {
     engine.step(0.5);
@@ -180,7 +181,7 @@ TEST(LocalSteps, KeepTheirPromiseWithoutSuspensionContacts) {
   std::int64_t engaged[2] = {0, 0};
   for (bool contacts : {true, false}) {
     scene.forces.suspension_contacts = contacts;
-    Engine engine(scene, sample_of(grains));
+    Engine engine(engine_setup(scene), sample_of(grains));
     while (engine.time() < 1.0) {
       engine.step(1.0);
       const std::string broken = engine.local_violation();
@@ -202,13 +203,13 @@ TEST(LocalSteps, WithoutSuspensionContactsResumesBitForBit) {
   const auto grains = crowd(-hw + 40e-6, hw - 40e-6, 0.2, 0.3);
   const std::string checkpoint =
       (std::filesystem::temp_directory_path() / "sedem_passing_test.ckpt").string();
-  Engine first(scene, sample_of(grains));
+  Engine first(engine_setup(scene), sample_of(grains));
   for (int k = 1; k <= 20; ++k) {
     first.advance_to(k);
     ASSERT_EQ(first.local_violation(), "") << k;
     if (k == 10) first.save_checkpoint(checkpoint);
   }
-  Engine resumed(scene, sample_of(grains));
+  Engine resumed(engine_setup(scene), sample_of(grains));
   resumed.load_checkpoint(checkpoint);
   for (int k = 11; k <= 20; ++k) resumed.advance_to(k);
   const Particles& a = first.particles();
@@ -234,7 +235,8 @@ TEST(LocalSteps, GrainsBelowEveryInstrumentRetireAndChangeNothingAbove) {
       400, -0.9 * hw, 0.9 * hw, 0.001, 0.45, [](int k) { return k % 2 ? 70e-6 : 20e-6; }, 3, 0.0);
   Scene kept = scene;
   scene.integrator.retire_below = true;
-  Engine retiring(scene, sample_of(grains)), keeping(kept, sample_of(grains));
+  Engine retiring(engine_setup(scene), sample_of(grains)),
+      keeping(engine_setup(kept), sample_of(grains));
   const double line = retiring.retire_height();
   const std::string checkpoint =
       (std::filesystem::temp_directory_path() / "sedem_retire_test.ckpt").string();
@@ -282,7 +284,7 @@ TEST(LocalSteps, GrainsBelowEveryInstrumentRetireAndChangeNothingAbove) {
   EXPECT_GE(top, 70e-6 * (1 - 1e-9));
   EXPECT_LT(top, 2 * 70e-6);
 
-  Engine resumed(scene, sample_of(grains));
+  Engine resumed(engine_setup(scene), sample_of(grains));
   resumed.load_checkpoint(checkpoint);
   for (int k = 31; k <= 60; ++k) resumed.advance_to(k);
   const Particles& c = resumed.particles();

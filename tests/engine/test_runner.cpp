@@ -5,6 +5,7 @@
 #include <random>
 
 #include "core/engine/runner.h"
+#include "core/run/stage_setups.h"
 #include "tests/engine/engine_test_support.h"
 
 namespace sedem {
@@ -29,7 +30,7 @@ Scene heap_scene() {
 
 TEST(EngineRunner, HandsOverSnapshotsInOrder) {
   Scene scene = heap_scene();
-  Engine engine(scene, sample_of(heap()));
+  Engine engine(engine_setup(scene), sample_of(heap()));
   EngineRunner runner(engine, {0.01, 0.02, 0.03, 0.04, 0.05}, 2);
   runner.start();
   double last = 0;
@@ -47,7 +48,7 @@ TEST(EngineRunner, HandsOverSnapshotsInOrder) {
 
 TEST(EngineRunner, StopsCleanly) {
   Scene scene = heap_scene();
-  Engine engine(scene, sample_of(heap()));
+  Engine engine(engine_setup(scene), sample_of(heap()));
   EngineRunner runner(engine, {1e3}, 1);
   runner.start();
   runner.stop();
@@ -61,11 +62,11 @@ TEST(EngineRunner, CheckpointAndResumeGiveTheSameBits) {
   const std::vector<double> times{0.01, 0.02, 0.03};
   Scene scene = heap_scene();
 
-  Engine straight(scene, sample_of(heap()));
+  Engine straight(engine_setup(scene), sample_of(heap()));
   for (double t : times) straight.advance_to(t);
 
   {
-    Engine first(scene, sample_of(heap()));
+    Engine first(engine_setup(scene), sample_of(heap()));
     EngineRunner runner(first, times, 1);
     runner.start();
     auto snap = runner.next();  // 0.01
@@ -74,7 +75,7 @@ TEST(EngineRunner, CheckpointAndResumeGiveTheSameBits) {
     runner.checkpoint(path);
     runner.stop();
   }
-  Engine resumed(scene, sample_of(heap()));
+  Engine resumed(engine_setup(scene), sample_of(heap()));
   resumed.load_checkpoint(path);
   EXPECT_GT(resumed.time(), 0.0);
   EXPECT_GT(resumed.stats().contacts, 0u);

@@ -6,6 +6,7 @@
 
 #include "core/physics/drag.h"
 #include "core/physics/stokes.h"
+#include "core/run/stage_setups.h"
 #include "tests/engine/engine_test_support.h"
 
 namespace sedem {
@@ -47,12 +48,12 @@ void check_table1(const std::string& method, double step_factor, double toleranc
     const double d = row.d_um * 1e-6;
     const double t_table = row.t_tr_1e5 * 1e-5, u_table = row.u_tr_1e5 * 1e-5;
     // The terminal velocity, to the table's 3-4 digits (half a unit of the last one).
-    Engine settled(scene, sample_of({{0, 0.4, d}}));
+    Engine settled(engine_setup(scene), sample_of({{0, 0.4, d}}));
     settled.advance_to(40 * t_table);
     const double u = -settled.particles().vy[0];
     EXPECT_NEAR(u, u_table, 0.0125 * u_table) << method << " " << row.d_um;
     // The response time, to the same digits plus the method's error.
-    Engine engine(scene, sample_of({{0, 0.4, d}}));
+    Engine engine(engine_setup(scene), sample_of({{0, 0.4, d}}));
     const double t = time_to_reach(engine, row.fraction, u, 2 * t_table, 400);
     EXPECT_NEAR(t, t_table, (0.005 + tolerance) * t_table) << method << " " << row.d_um;
   }
@@ -71,7 +72,7 @@ TEST(EngineSettling, TerminalVelocityIsStokesExactly) {
     Scene scene = scene_with("stokes", method);
     scene.forces.contact = false;
     const double d = 25e-6;
-    Engine engine(scene, sample_of({{0, 0.4, d}}));
+    Engine engine(engine_setup(scene), sample_of({{0, 0.4, d}}));
     engine.advance_to(0.2);  // ~800 response times
     const double ut = stokes::terminal_velocity(d, 2500, scene.fluid);
     EXPECT_NEAR(-engine.particles().vy[0], ut, 1e-9 * ut) << method;
@@ -82,7 +83,7 @@ TEST(EngineSettling, FallsTheDistanceOfEq13) {
   Scene scene = scene_with("stokes", "exponential");
   scene.forces.contact = false;
   const double d = 50e-6;
-  Engine engine(scene, sample_of({{0, 0.4, d}}));
+  Engine engine(engine_setup(scene), sample_of({{0, 0.4, d}}));
   const double t = 0.01;
   engine.advance_to(t);
   const double ut = stokes::terminal_velocity(d, 2500, scene.fluid);
@@ -97,7 +98,7 @@ TEST(EngineDiFelice, DiluteLowReynoldsLimitIs096Stokes) {
   Scene scene = scene_with("di_felice", "exponential");
   scene.forces.contact = false;
   const double d = 2.5e-6;
-  Engine engine(scene, sample_of({{0, 0.4, d, 0, 0, 1.0}}));
+  Engine engine(engine_setup(scene), sample_of({{0, 0.4, d, 0, 0, 1.0}}));
   engine.advance_to(1e-3);  // ~1000 response times
   const double ut = stokes::terminal_velocity(d, 2500, scene.fluid);
   EXPECT_NEAR(-engine.particles().vy[0] * 0.96 / ut, 1.0, 2e-3);
@@ -111,7 +112,7 @@ TEST(EngineDiFelice, LoneHeavilyWeightedGrainDoesNotHinderItself) {
   const double d = 10e-6, cell = scene.forces.voidage_cell;
   const double weight =
       0.5 * cell * cell * scene.cylinder.slab_thickness() / (std::numbers::pi / 6 * d * d * d);
-  Engine engine(scene, sample_of({{0.5 * cell, 0.2 + 0.5 * cell, d, 0, 0, weight}}));
+  Engine engine(engine_setup(scene), sample_of({{0.5 * cell, 0.2 + 0.5 * cell, d, 0, 0, weight}}));
   engine.advance_to(0.5);
   const double ut = drag::di_felice_terminal_velocity(d, 2500, scene.fluid, 1.0);
   EXPECT_NEAR(-engine.particles().vy[0], ut, 1e-6 * ut);
@@ -134,7 +135,7 @@ TEST(EngineDiFelice, DragGrowsWithConcentration) {
       grains.push_back({0.2 * cell + k * 0.6 * cell / count, 0.4 * cell + 0.2, d, 0, 0,
                         (1 - eps) * cell_volume / (count * grain)});
     // Several steps: each takes its drag coefficient at the speed the previous one reached.
-    Engine engine(scene, sample_of(grains));
+    Engine engine(engine_setup(scene), sample_of(grains));
     engine.advance_to(0.5);
     const double others = 1 - (1 - eps) * (count - 1) / count;
     const double expected = drag::di_felice_terminal_velocity(d, 2500, scene.fluid, others);
@@ -142,7 +143,7 @@ TEST(EngineDiFelice, DragGrowsWithConcentration) {
     EXPECT_NEAR(u, expected, 1e-6 * expected) << eps;
     Scene counted = scene;
     counted.forces.voidage_excludes_self = false;
-    Engine self(counted, sample_of(grains));
+    Engine self(engine_setup(counted), sample_of(grains));
     self.advance_to(0.5);
     const double whole = drag::di_felice_terminal_velocity(d, 2500, scene.fluid, eps);
     EXPECT_NEAR(-self.particles().vy[count / 2], whole, 1e-6 * whole) << eps;

@@ -4,7 +4,7 @@
 
 #include <vtkImageData.h>
 
-#include "core/engine/engine.h"
+#include "core/model/snapshot.h"
 
 #include "render/series_reader.h"
 

@@ -1,0 +1,17 @@
+#include "core/run/stage_setups.h"
+
+namespace sedem {
+
+EngineSetup engine_setup(const Scene& scene) {
+  EngineSetup s;
+  s.fluid = scene.fluid;
+  s.cylinder = scene.cylinder;
+  s.forces = scene.forces;
+  s.integrator = scene.integrator;
+  s.lowest_measured_height = lowest_measured_height(scene.instruments, scene.cylinder.height);
+  s.instruments_read = any_instrument(scene.instruments);
+  s.end_time = scene.end_time;
+  return s;
+}
+
+}  // namespace sedem
