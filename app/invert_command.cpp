@@ -14,6 +14,7 @@
 #include "core/lab/hydrometer_reduction.h"
 #include "core/lab/lab_csv.h"
 #include "core/lab/water.h"
+#include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
 #include "render/invert_figure.h"
@@ -116,7 +117,7 @@ int run_invert(const InvertOptions& o) {
     auto recorded = invert::record_simulated(scene, test, times, raw, o.resolution);
     data = std::move(recorded.data);
     standard = std::move(recorded.standard);
-    truth = plan_sample(scene).classes;
+    truth = plan_sample(sample_setup(scene)).classes;
   } else if (test == Test::hydrometer) {
     const auto lab = read_lab_readings_csv(in);
     double mean_t = 20;

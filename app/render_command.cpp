@@ -10,6 +10,7 @@
 #include "app/output_observers.h"
 #include "app/run_record.h"
 #include "app/test_outputs.h"
+#include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
 #include "render/series_reader.h"
@@ -45,7 +46,7 @@ LabelledResults render_one(const fs::path& dir, bool quiet, nlohmann::json& scen
   }
   Sample sample;
   try {
-    sample = build_sample(scene);
+    sample = build_sample(sample_setup(scene));
   } catch (const SceneError& e) {
     throw RenderFailure(e.what(), exit_code::invalid_scene);
   }

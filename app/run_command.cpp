@@ -21,8 +21,8 @@
 #include "app/run_record.h"
 #include "app/stop_signals.h"
 #include "app/test_outputs.h"
-#include "core/sample/sample_builder.h"
 #include "core/run/stage_setups.h"
+#include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
 #include "render/series_reader.h"
 
@@ -144,7 +144,7 @@ int run_in(const RunOptions& options, RunContext& ctx) {
     if (!resuming)
       out = options.out_dir.empty() ? fs::path("out") / safe_folder_name(scene.name)
                                     : fs::path(options.out_dir);
-    sample = build_sample(scene);
+    sample = build_sample(sample_setup(scene));
   } catch (const SceneError& e) {
     std::cerr << "sedem: invalid scene: " << e.what() << '\n';
     return exit_code::invalid_scene;

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 
 namespace sedem::app {
@@ -49,7 +50,7 @@ std::size_t meminfo_available() {
 }  // namespace
 
 std::size_t estimate_run_bytes(const Scene& scene, std::string* key) {
-  const double particles = double(plan_sample(scene).simulated_total);
+  const double particles = double(plan_sample(sample_setup(scene)).simulated_total);
   const double particle_bytes = particles * kBytesPerParticle;
   double grid_bytes = 0;
   if (scene.forces.drag == "di_felice") {

@@ -16,6 +16,7 @@
 
 #include "bench/bench_support.h"
 #include "core/observe/simulate.h"
+#include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
 #include "render/plot.h"
@@ -123,7 +124,7 @@ int main(int argc, char** argv) {
       std::vector<std::string> overrides = sets;
       overrides.insert(overrides.end(), combo.begin(), combo.end());
       Scene scene = load_scene(file, overrides);
-      SimulationRun run = simulate(scene, build_sample(scene));
+      SimulationRun run = simulate(scene, build_sample(sample_setup(scene)));
       for (const auto& t : run.results.granulometry.tests) {
         Row r{scene.name,
               t.test,

@@ -31,6 +31,7 @@
 #include "core/invert/invert_input.h"
 #include "core/observe/simulate.h"
 #include "core/reference/reference_readings.h"
+#include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/sample/size_classes.h"
 #include "core/scene/scene_loader.h"
@@ -108,7 +109,7 @@ int main(int argc, char** argv) {
     std::vector<TestReadings> readings;
     Sample sample;
     if (source == "dem") {
-      sample = build_sample(scene);
+      sample = build_sample(sample_setup(scene));
       readings = simulate(scene, sample).results.dem();
     } else {
       sample.particle_density = scene.sample.particle_density;

@@ -26,6 +26,7 @@
 #include "core/instruments/instrument_panel.h"
 #include "core/reference/reference_field.h"
 #include "core/reference/reference_readings.h"
+#include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
 
@@ -94,7 +95,7 @@ int main(int argc, char** argv) {
           const Scene scene = load_scene(file, overrides);
           name = scene.name;
           const auto start = std::chrono::steady_clock::now();
-          const Sample sample = build_sample(scene);
+          const Sample sample = build_sample(sample_setup(scene));
           build_seconds +=
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
           std::vector<double> velocity;

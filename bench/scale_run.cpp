@@ -12,6 +12,7 @@
 
 #include "bench/bench_support.h"
 #include "core/observe/simulate.h"
+#include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
 #include "render/plot.h"
@@ -124,7 +125,7 @@ std::vector<ScaleRow> run_scale_bench(const ScaleOptions& options, std::FILE* ta
         r.sample = scene.name;
         r.end_time_s = scene.end_time;
         const auto start = std::chrono::steady_clock::now();
-        Sample sample = build_sample(scene);
+        Sample sample = build_sample(sample_setup(scene));
         r.sample_build_s =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const SimulationRun run = simulate(scene, std::move(sample));

@@ -24,6 +24,7 @@
 
 #include "bench/bench_support.h"
 #include "core/observe/simulate.h"
+#include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
 
@@ -97,7 +98,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> overrides = sets;
     overrides.insert(overrides.end(), v.sets.begin(), v.sets.end());
     const Scene scene = load_scene(scene_file, overrides);
-    const Sample sample = build_sample(scene);
+    const Sample sample = build_sample(sample_setup(scene));
     SimulationRun run = simulate(scene, sample, true);
     if (v.name == "reference") reference = run;
     const double speedup = reference.wall_seconds / std::max(run.wall_seconds, 1e-9);

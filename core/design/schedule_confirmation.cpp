@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/observe/simulate.h"
+#include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene.h"
 
@@ -25,7 +26,7 @@ std::vector<Reading> dem_readings(const Scene& scene, const std::string& test,
   std::sort(all.times.begin(), all.times.end());
   all.times.erase(std::unique(all.times.begin(), all.times.end()), all.times.end());
   const Scene s = scene_for_schedule(scene, test, all);
-  const SimulationRun run = simulate(s, build_sample(s));
+  const SimulationRun run = simulate(s, build_sample(sample_setup(s)));
   wall += run.wall_seconds;
   for (const auto& t : run.results.granulometry.tests)
     if (t.test == test) return t.dem.rows;

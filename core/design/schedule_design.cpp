@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/reference/reference_readings.h"
+#include "core/run/stage_setups.h"
 #include "core/sample/grading_curve.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene.h"
@@ -256,7 +257,7 @@ struct ScheduleReader::State {
 namespace {
 
 Sample planned_sample(const Scene& scene) {
-  const SamplePlan plan = plan_sample(scene);
+  const SamplePlan plan = plan_sample(sample_setup(scene));
   Sample sample;
   sample.classes = plan.classes;
   sample.particle_density = scene.sample.particle_density;

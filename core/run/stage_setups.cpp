@@ -14,4 +14,8 @@ EngineSetup engine_setup(const Scene& scene) {
   return s;
 }
 
+SampleSetup sample_setup(const Scene& scene) {
+  return SampleSetup{scene.sample, scene.cylinder};
+}
+
 }  // namespace sedem

@@ -6,7 +6,7 @@
 
 #include "core/model/cylinder.h"
 #include "core/model/particles.h"
-#include "core/scene/scene_loader.h"
+#include "core/model/scene_error.h"
 
 namespace sedem {
 

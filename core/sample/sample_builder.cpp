@@ -4,16 +4,15 @@
 
 #include "core/sample/grading_curve.h"
 #include "core/sample/placement.h"
+#include "core/sample/sample_checks.h"
 #include "core/sample/size_classes.h"
-#include "core/scene/scene.h"
-#include "core/scene/scene_checks.h"
 
 namespace sedem {
 
-SamplePlan plan_sample(const Scene& scene) {
-  const auto& cfg = scene.sample;
+SamplePlan plan_sample(const SampleSetup& setup) {
+  const auto& cfg = setup.sample;
   SamplePlan plan;
-  plan.section_mass = cfg.total_mass * scene.cylinder.section_fraction;
+  plan.section_mass = cfg.total_mass * setup.cylinder.section_fraction;
   plan.classes = discretise(GradingCurve(cfg.grading), cfg.size_count, plan.section_mass,
                             cfg.particle_density);
   if (plan.classes.empty()) return plan;
@@ -22,7 +21,7 @@ SamplePlan plan_sample(const Scene& scene) {
       cfg.simulated_count > 0
           ? cfg.simulated_count
           : count_for_mass_fraction(plan.classes, shares, cfg.mass_fraction, cfg.particle_density);
-  // Counts are only planned for a total that could be simulated; check_scene refuses more.
+  // Counts are only planned for a total that could be simulated; check_sample refuses more.
   if (plan.requested_total > kMaxSimulatedCount) return plan;
   assign_counts(plan.classes, shares, plan.requested_total);
   double covered = 0;
@@ -30,15 +29,19 @@ SamplePlan plan_sample(const Scene& scene) {
     plan.simulated_total += c.simulated_count;
     covered += double(c.simulated_count) * 0.25 * std::numbers::pi * c.diameter * c.diameter;
   }
-  plan.area_fraction = covered / (scene.cylinder.diameter * scene.cylinder.height);
+  plan.area_fraction = covered / (setup.cylinder.diameter * setup.cylinder.height);
   return plan;
 }
 
-Sample build_sample(const Scene& scene) {
-  check_scene(scene, SceneOrigins{"scene", {}});
-  SamplePlan plan = plan_sample(scene);
+Sample build_sample(const SampleSetup& setup) {
+  try {
+    check_sample(setup);
+  } catch (const SetupProblem& p) {
+    throw SceneError(std::string("sample: ") + p.what());
+  }
+  SamplePlan plan = plan_sample(setup);
   Sample sample;
-  sample.particle_density = scene.sample.particle_density;
+  sample.particle_density = setup.sample.particle_density;
   sample.section_mass = plan.section_mass;
   sample.classes = std::move(plan.classes);
 
@@ -54,8 +57,8 @@ Sample build_sample(const Scene& scene) {
       p.id[i] = std::uint32_t(i);
     }
   }
-  place_particles(p, scene.cylinder, scene.sample.placement, std::uint64_t(scene.sample.seed));
-  sample.area_fraction = area_fraction(p, scene.cylinder);
+  place_particles(p, setup.cylinder, setup.sample.placement, std::uint64_t(setup.sample.seed));
+  sample.area_fraction = area_fraction(p, setup.cylinder);
   return sample;
 }
 

@@ -4,12 +4,11 @@
 #include <vector>
 
 #include "core/model/sample.h"
+#include "core/sample/sample_setup.h"
 
 namespace sedem {
 
-struct Scene;
-
-// The sizes, counts and weights of a scene's sample, before any particle is placed: cheap,
+// The sizes, counts and weights of a sample, before any particle is placed: cheap,
 // so that a scene can be checked (particle count, area fraction) before anything runs.
 struct SamplePlan {
   std::vector<SizeClass> classes;    // sizes with mass, counts and weights set
@@ -18,12 +17,12 @@ struct SamplePlan {
   std::int64_t requested_total = 0;  // the count asked for (or derived from the fraction)
   double area_fraction = 0;          // share of the section's plane the particles will cover
 };
-SamplePlan plan_sample(const Scene& scene);
+SamplePlan plan_sample(const SampleSetup& setup);
 
-// Discretises the scene's grading curve into size classes (Sect. 4.4, Eq. 15), gives each
-// simulated particle its statistical weight, and places the particles in the section
-// (Fig. 6). Particles come ordered by size class, ids 0..N-1. Throws SceneError when the
-// scene is invalid or its particles cannot be placed.
-Sample build_sample(const Scene& scene);
+// Discretises the grading curve into size classes (Sect. 4.4, Eq. 15), gives each simulated
+// particle its statistical weight, and places the particles in the section (Fig. 6).
+// Particles come ordered by size class, ids 0..N-1. Throws SceneError when the setup breaks
+// one of the sample's rules (check_sample) or its particles cannot be placed.
+Sample build_sample(const SampleSetup& setup);
 
 }  // namespace sedem

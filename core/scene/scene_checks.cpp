@@ -9,7 +9,7 @@
 #include "core/instruments/pipette.h"
 #include "core/sample/grading_curve.h"
 #include "core/sample/placement.h"
-#include "core/sample/sample_builder.h"
+#include "core/sample/sample_checks.h"
 #include "core/scene/scene.h"
 #include "core/scene/scene_loader.h"
 
@@ -196,40 +196,14 @@ void check_scene(const Scene& scene, const SceneOrigins& origins) {
                "and sample.mass_fraction = 0: give one of them (a particle count, or the share "
                "of the section's soil to simulate)");
 
-  const SamplePlan plan = plan_sample(scene);
-  const std::string count_key =
-      s.simulated_count > 0 ? "sample.simulated_count" : "sample.mass_fraction";
-  const std::string sizes = std::to_string(plan.classes.size());
-  if (plan.requested_total > kMaxSimulatedCount)
-    check.fail(count_key, "asks for " + number(double(plan.requested_total)) +
-                              " particles; at most " + number(double(kMaxSimulatedCount)) +
-                              " are allowed: lower it");
-  if (plan.requested_total < std::int64_t(plan.classes.size()))
-    check.fail(count_key,
-               "gives " + std::to_string(plan.requested_total) + " particles for the " + sizes +
-                   " sizes of the grading curve, and each size needs at least one; raise it or "
-                   "lower sample.size_count");
-
-  const std::size_t n = std::size_t(plan.simulated_total);
-  const std::int64_t auto_side = cells_per_side(PlacementConfig{}, n);
-  if (s.placement.cells_per_side > auto_side)
-    check.fail("sample.placement.cells_per_side",
-               "makes more cells than particles (" + std::to_string(n) + "); at most " +
-                   std::to_string(auto_side) + " (0 picks that)");
-
-  if (plan.area_fraction > s.placement.max_area_fraction) {
-    const double area = plan.area_fraction * scene.cylinder.diameter * scene.cylinder.height;
-    check.fail(count_key, "gives " + std::to_string(n) + " particles of total area " +
-                              number(area) + " m^2, which cannot be placed without overlap " +
-                              "in the section: area fraction " + number(plan.area_fraction) +
-                              " > limit " + number(s.placement.max_area_fraction) +
-                              " (sample.placement.max_area_fraction); lower it");
+  try {
+    check_sample(SampleSetup{scene.sample, scene.cylinder});
+  } catch (const SetupProblem& p) {
+    check.fail(p.key, p.problem);
   }
 
-  const auto& in = scene.instruments;
   const bool retiring = scene.integrator.method == "exponential" && scene.integrator.local_steps &&
-                        scene.integrator.retire_below &&
-                        (in.hydrometer || in.buoyancy || in.pipette);
+                        scene.integrator.retire_below && any_instrument(scene.instruments);
   if (!scene.forces.suspension_contacts && !retiring)
     check.fail("forces.suspension_contacts",
                "= false needs grains to retire onto the coarse bed below the instruments "

@@ -6,15 +6,10 @@
 #include <string_view>
 #include <vector>
 
+#include "core/model/scene_error.h"
 #include "core/scene/scene.h"
 
 namespace sedem {
-
-// A scene that cannot be used. The message names the file and line (or `--set`), the key,
-// the value and what is allowed; nothing runs on an invalid scene.
-struct SceneError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 // The largest scene file read (a scene is a few kilobytes of text).
 inline constexpr std::size_t kMaxSceneFileBytes = 1 << 20;

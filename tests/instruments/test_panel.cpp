@@ -10,6 +10,7 @@
 #include "core/instruments/instrument_panel.h"
 #include "core/physics/stokes.h"
 #include "core/reference/reference_readings.h"
+#include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene.h"
 
@@ -22,7 +23,7 @@ TEST(InstrumentPanel, UniformStartReadsTheWholeSample) {
   scene.instruments.hydrometer_times = {60.0};
   scene.instruments.buoyancy_times = {60.0};
   scene.instruments.pipette_times = {30.0, 60.0};
-  const Sample sample = build_sample(scene);
+  const Sample sample = build_sample(sample_setup(scene));
   InstrumentPanel panel(scene, sample);
   EXPECT_EQ(panel.reading_times(), (std::vector<double>{30.0, 60.0}));
   // c_0 = (60 g / 180) / (B H h_z) = 41.457 kg/m^3.
@@ -56,7 +57,7 @@ TEST(InstrumentPanel, KinematicSettlingMatchesTheReference) {
   scene.sample.simulated_count = 20000;
   scene.instruments.buoyancy_times = {60, 240, 900};
   scene.instruments.pipette_times = {60, 240, 900};
-  const Sample sample = build_sample(scene);
+  const Sample sample = build_sample(sample_setup(scene));
   InstrumentPanel panel(scene, sample);
   for (double t : panel.reading_times()) {
     Particles p = sample.particles;

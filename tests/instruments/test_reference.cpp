@@ -11,6 +11,7 @@
 #include "core/physics/stokes.h"
 #include "core/reference/reference_field.h"
 #include "core/reference/reference_readings.h"
+#include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene.h"
 
@@ -135,7 +136,7 @@ TEST(Reference, SceneReadingsAndBias) {
   scene.sample.grading.family = "table";
   scene.sample.simulated_count = 2000;
   scene.instruments.layers = 4000;
-  const Sample sample = build_sample(scene);
+  const Sample sample = build_sample(sample_setup(scene));
   const auto readings = reference_readings(scene, sample);
   ASSERT_EQ(readings.size(), 3u);
   EXPECT_EQ(readings[0].test, "hydrometer");
@@ -168,7 +169,7 @@ namespace {
 TEST(Reference, DefaultSceneBiasAndInitialDensity) {
   Scene scene;
   scene.sample.simulated_count = 2000;
-  const Sample sample = build_sample(scene);
+  const Sample sample = build_sample(sample_setup(scene));
   const ReferenceSolution ref = make_reference(scene, sample, reference_options(scene));
   const LayerFields start = ref.layer_fields(0.0, 4000, scene.fluid);
   EXPECT_NEAR(start.density()[2000], 1000.0 + 0.6 * 41.456985, 1e-3);
@@ -268,7 +269,7 @@ TEST(LocalVoidage, HeldSpeedsReproduceTheSolutionAndAreLinear) {
 TEST(LocalVoidage, FollowsTheScenesDragLaw) {
   Scene scene;
   scene.sample.simulated_count = 2000;
-  const Sample sample = build_sample(scene);
+  const Sample sample = build_sample(sample_setup(scene));
   ReferenceOptions free;
   free.settling = ReferenceSettling::free;
   ReferenceOptions local;

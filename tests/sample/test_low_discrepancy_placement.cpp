@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/run/stage_setups.h"
 #include "core/sample/placement.h"
 #include "core/sample/quasi_random.h"
 #include "core/sample/sample_builder.h"
@@ -36,11 +37,12 @@ TEST(QuasiRandom, R2PointsAreTheKroneckerSequenceOfThePlasticNumber) {
 
 // A sample of `sizes` log-uniform sizes from 2.5 to 70 um, `count` particles, equal mass.
 Sample many_sizes(const std::string& method, std::int64_t count, int sizes, int seed) {
-  return build_sample(parse_scene("[sample]\nsimulated_count = " + std::to_string(count) +
-                                      "\nsize_count = " + std::to_string(sizes) + "\nseed = " +
-                                      std::to_string(seed) + "\n[sample.placement]\nmethod = \"" +
-                                      method + "\"\n[sample.grading]\nfamily = \"log_uniform\"\n",
-                                  "ld.toml"));
+  return build_sample(sample_setup(
+      parse_scene("[sample]\nsimulated_count = " + std::to_string(count) +
+                      "\nsize_count = " + std::to_string(sizes) +
+                      "\nseed = " + std::to_string(seed) + "\n[sample.placement]\nmethod = \"" +
+                      method + "\"\n[sample.grading]\nfamily = \"log_uniform\"\n",
+                  "ld.toml")));
 }
 
 // Deviation of each size's count in circles of the pipette's size (radius 1.495 cm, all
@@ -170,9 +172,9 @@ TEST(LowDiscrepancyPlacement, SameSeedSameSampleOtherSeedOtherSample) {
   const std::string toml =
       "[sample]\nsimulated_count = 5000\n[sample.placement]\n"
       "method = \"low_discrepancy\"\n";
-  const Sample a = build_sample(parse_scene(toml, "a.toml", {"sample.seed=42"}));
-  const Sample b = build_sample(parse_scene(toml, "b.toml", {"sample.seed=42"}));
-  const Sample c = build_sample(parse_scene(toml, "c.toml", {"sample.seed=43"}));
+  const Sample a = build_sample(sample_setup(parse_scene(toml, "a.toml", {"sample.seed=42"})));
+  const Sample b = build_sample(sample_setup(parse_scene(toml, "b.toml", {"sample.seed=42"})));
+  const Sample c = build_sample(sample_setup(parse_scene(toml, "c.toml", {"sample.seed=43"})));
   EXPECT_EQ(a.particles.x, b.particles.x);
   EXPECT_EQ(a.particles.y, b.particles.y);
   std::size_t moved = 0;
@@ -180,8 +182,8 @@ TEST(LowDiscrepancyPlacement, SameSeedSameSampleOtherSeedOtherSample) {
     moved += a.particles.x[i] != c.particles.x[i] ? 1 : 0;
   EXPECT_GT(moved, a.particles.size() * 99 / 100);
   // And the key chooses the method: the stratified sample of the same seed differs.
-  const Sample s = build_sample(
-      parse_scene(toml, "s.toml", {"sample.seed=42", "sample.placement.method=stratified"}));
+  const Sample s = build_sample(sample_setup(
+      parse_scene(toml, "s.toml", {"sample.seed=42", "sample.placement.method=stratified"})));
   EXPECT_NE(a.particles.x, s.particles.x);
 }
 
@@ -191,7 +193,7 @@ TEST(LowDiscrepancyPlacement, AMillionParticleSampleIsQuick) {
       "[sample]\nsimulated_count = 1000000\n[sample.placement]\nmethod = \"low_discrepancy\"\n",
       "million.toml");
   const auto start = std::chrono::steady_clock::now();
-  const Sample s = build_sample(scene);
+  const Sample s = build_sample(sample_setup(scene));
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("built a 1e6-particle low-discrepancy sample in %.2f s\n", seconds);

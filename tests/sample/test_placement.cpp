@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/run/stage_setups.h"
 #include "core/sample/placement.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
@@ -67,7 +68,7 @@ TEST(Placement, EverySizeIsSpreadEvenlyOverTheRows) {
       "[sample.placement]\nmethod = \"stratified\"\n[sample.grading]\n"
       "diameters_um = [5, 20, 60]\npercent_finer = [0, 50, 100]\n",
       "rows.toml");
-  const Sample s = build_sample(scene);
+  const Sample s = build_sample(sample_setup(scene));
   const std::int64_t side = cells_per_side(PlacementConfig{}, s.particles.size());
   ASSERT_EQ(side, 142);
   for (std::size_t k = 0; k < s.classes.size(); ++k) {
@@ -95,9 +96,9 @@ TEST(Placement, NoOverlapAndInsideTheWallsBottomAndSurface) {
 TEST(Placement, SameSeedSameSampleOtherSeedOtherSample) {
   const std::string toml =
       "[sample]\nsimulated_count = 5000\n[sample.placement]\nmethod = \"stratified\"\n";
-  const Sample a = build_sample(parse_scene(toml, "a.toml", {"sample.seed=42"}));
-  const Sample b = build_sample(parse_scene(toml, "b.toml", {"sample.seed=42"}));
-  const Sample c = build_sample(parse_scene(toml, "c.toml", {"sample.seed=43"}));
+  const Sample a = build_sample(sample_setup(parse_scene(toml, "a.toml", {"sample.seed=42"})));
+  const Sample b = build_sample(sample_setup(parse_scene(toml, "b.toml", {"sample.seed=42"})));
+  const Sample c = build_sample(sample_setup(parse_scene(toml, "c.toml", {"sample.seed=43"})));
   EXPECT_EQ(a.particles.x, b.particles.x);
   EXPECT_EQ(a.particles.y, b.particles.y);
   EXPECT_EQ(a.particles.diameter, b.particles.diameter);
@@ -109,10 +110,10 @@ TEST(Placement, SameSeedSameSampleOtherSeedOtherSample) {
 }
 
 TEST(Placement, BuiltSampleIsOrderedAndReportsItsAreaFraction) {
-  const Sample s = build_sample(
+  const Sample s = build_sample(sample_setup(
       parse_scene("[sample]\nsimulated_count = 2000\nsize_count = 2\n[sample.grading]\n"
                   "diameters_um = [10, 35, 60]\npercent_finer = [0, 50, 100]\n",
-                  "two.toml"));
+                  "two.toml")));
   ASSERT_EQ(s.classes.size(), 2u);
   EXPECT_EQ(s.classes[0].simulated_count, 1000);
   const auto& p = s.particles;
@@ -157,7 +158,7 @@ TEST(Placement, AMillionParticleSampleIsQuick) {
       "[sample]\nsimulated_count = 1000000\n[sample.placement]\nmethod = \"stratified\"\n",
       "million.toml");
   const auto start = std::chrono::steady_clock::now();
-  const Sample s = build_sample(scene);
+  const Sample s = build_sample(sample_setup(scene));
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("built a 1e6-particle sample (area fraction %.4f) in %.2f s\n", s.area_fraction,

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/sample/size_classes.h"
 #include "core/scene/scene_loader.h"
@@ -22,7 +23,7 @@ Scene log_uniform_scene(const std::string& weighting, std::int64_t count) {
 TEST(Weights, EachSizeCarriesItsRealMass) {
   for (const char* scheme : {"equal_mass", "uniform_count", "equal_per_size"}) {
     const Scene scene = log_uniform_scene(scheme, 20000);
-    const Sample sample = build_sample(scene);
+    const Sample sample = build_sample(sample_setup(scene));
     ASSERT_EQ(sample.particles.size(), 20000u) << scheme;
     std::vector<double> carried(sample.classes.size(), 0.0);
     const auto& p = sample.particles;
@@ -41,14 +42,14 @@ TEST(Weights, EachSizeCarriesItsRealMass) {
 
 TEST(Weights, SchemesShareTheParticlesAsDocumented) {
   {  // equal_mass: every particle stands for the same mass (up to rounding of the counts)
-    const Sample s = build_sample(log_uniform_scene("equal_mass", 22000));
+    const Sample s = build_sample(sample_setup(log_uniform_scene("equal_mass", 22000)));
     const double per_particle = s.section_mass / 22000;
     for (const auto& c : s.classes)
       EXPECT_NEAR(c.weight * grain_mass(c.diameter, 2500) / per_particle, 1,
                   1.0 / double(c.simulated_count));
   }
   {  // uniform_count: every particle stands for the same number of grains
-    const SamplePlan s = plan_sample(log_uniform_scene("uniform_count", 1000000));
+    const SamplePlan s = plan_sample(sample_setup(log_uniform_scene("uniform_count", 1000000)));
     const double mean = [&] {
       double real = 0;
       for (const auto& c : s.classes) real += c.real_count;
@@ -61,7 +62,7 @@ TEST(Weights, SchemesShareTheParticlesAsDocumented) {
     }
   }
   {  // equal_per_size: 22000 particles over 220 sizes, 100 each
-    const Sample s = build_sample(log_uniform_scene("equal_per_size", 22000));
+    const Sample s = build_sample(sample_setup(log_uniform_scene("equal_per_size", 22000)));
     for (const auto& c : s.classes) EXPECT_EQ(c.simulated_count, 100);
   }
 }
@@ -90,7 +91,7 @@ TEST(Weights, MassFractionSetsTheCount) {
       "family = \"table\"\ndiameters_um = [20, 40]\npercent_finer = [0, 100]\n",
       "fraction.toml");
   EXPECT_EQ(scene.sample.simulated_count, 0);
-  const SamplePlan plan = plan_sample(scene);
+  const SamplePlan plan = plan_sample(sample_setup(scene));
   double real = 0, simulated_mass = 0;
   for (const auto& c : plan.classes) {
     real += c.real_count;

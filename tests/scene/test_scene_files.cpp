@@ -5,6 +5,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
 #include "core/scene/schema_doc.h"
@@ -24,7 +25,7 @@ TEST(SceneFiles, AllShippedScenesLoadAndPlace) {
     Scene scene;
     ASSERT_NO_THROW(scene = load_scene(entry.path()));
     EXPECT_EQ(scene.name, entry.path().stem().string());
-    const Sample sample = build_sample(scene);
+    const Sample sample = build_sample(sample_setup(scene));
     EXPECT_EQ(std::int64_t(sample.particles.size()), scene.sample.simulated_count);
     EXPECT_GT(sample.area_fraction, 0);
     EXPECT_LE(sample.area_fraction, scene.sample.placement.max_area_fraction);
