@@ -10,6 +10,7 @@
 #include "app/output_observers.h"
 #include "app/run_record.h"
 #include "app/test_outputs.h"
+#include "core/observe/observer_set.h"
 #include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
@@ -74,8 +75,11 @@ LabelledResults render_one(const fs::path& dir, bool quiet, nlohmann::json& scen
     throw RenderFailure(e.what(), exit_code::invalid_scene);
   }
   RunObservers observers = make_observers(scene, sample, dir, {.write_particles = false});
-  for (const auto& [time, file] : entries) dispatch(observers.all, read(file, time));
-  for (auto& o : observers.all) o->finish();
+  // The run's pipeline with the saved series in the engine's place.
+  ObserverSet replayed;
+  for (auto& o : observers.all) replayed.add(*o);
+  for (const auto& [time, file] : entries) replayed.show(read(file, time));
+  replayed.finish();
   write_test_outputs(scene, observers, dir);
   if (!quiet) std::printf("sedem: redrew %s from %zu snapshots\n", dir.c_str(), entries.size());
   return labelled_results(scene, observers);

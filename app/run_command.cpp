@@ -1,9 +1,5 @@
 #include "app/run_command.h"
 
-#include <QCoreApplication>
-#include <QThread>
-#include <QTimer>
-
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -12,7 +8,6 @@
 #include <optional>
 
 #include "app/checkpoint_file.h"
-#include "app/engine_worker.h"
 #include "app/exit_codes.h"
 #include "app/output_observers.h"
 #include "app/progress.h"
@@ -21,6 +16,7 @@
 #include "app/run_record.h"
 #include "app/stop_signals.h"
 #include "app/test_outputs.h"
+#include "core/run/simulation.h"
 #include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
@@ -37,16 +33,6 @@ struct Failure {
   int status;
   std::string message;
 };
-
-// Every time an observer wants, from `from` (a resumed run's start) to the end.
-std::vector<double> schedule_of(const std::vector<std::unique_ptr<Observer>>& observers,
-                                double end_time, double from) {
-  std::vector<std::vector<double>> lists{{end_time}};
-  for (const auto& o : observers) lists.push_back(o->wanted_times());
-  std::vector<double> merged = merge_times(lists);
-  std::erase_if(merged, [&](double t) { return t > end_time * (1 + 1e-12) || t < from; });
-  return merged;
-}
 
 // A resumed run: its scene as the interrupted run resolved it.
 Scene scene_of_run(const fs::path& dir, std::string& scene_file) {
@@ -76,15 +62,12 @@ Scene scene_of_run(const fs::path& dir, std::string& scene_file) {
   }
 }
 
-// The observers that accumulate see the saved snapshots before `until` again, so that a
-// resumed run's readings are those of a run that never stopped.
-void replay(const RunObservers& observers, const fs::path& dir, double until,
-            std::size_t expected_particles) {
-  bool any = false;  // an accumulating observer wanted a snapshot before `until`
-  for (const auto& o : observers.all)
-    if (o->accumulates())
-      for (double t : o->wanted_times()) any = any || t < until;
-  if (!any) return;
+// The observers that accumulate see the saved snapshots before the engine's time again, so
+// that a resumed run's readings are those of a run that never stopped.
+void replay(const Simulation& simulation, const fs::path& dir) {
+  const double until = simulation.engine().time();
+  if (!simulation.observers().needs_replay(until)) return;
+  const std::size_t expected_particles = simulation.sample().particles.size();
   for (const auto& [time, file] : render::read_pvd(dir / "particles.pvd")) {
     if (time >= until) break;
     const Snapshot snap = render::read_particles_vtp(dir / file);
@@ -95,8 +78,7 @@ void replay(const RunObservers& observers, const fs::path& dir, double until,
     if (snap.time != time)
       throw std::runtime_error((dir / file).string() + ": its time " + std::to_string(snap.time) +
                                " s differs from particles.pvd's " + std::to_string(time) + " s");
-    for (const auto& o : observers.all)
-      if (o->accumulates() && contains_time(o->wanted_times(), snap.time)) o->observe(snap);
+    simulation.observers().replay(snap);
   }
 }
 
@@ -127,8 +109,6 @@ std::string engine_message(const std::string& what) {
 }
 
 int run_in(const RunOptions& options, RunContext& ctx) {
-  auto& qt = *QCoreApplication::instance();
-  qRegisterMetaType<std::shared_ptr<const Snapshot>>();
   const bool resuming = !options.resume_dir.empty();
   fs::path out = options.resume_dir;
   Scene& scene = ctx.scene;
@@ -194,7 +174,10 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   }
   ctx.record_started = true;
 
-  Engine engine(engine_setup(scene), sample);  // a copy: the observers need the sample too
+  // The engine gets the sample; the observers read it back from the simulation.
+  const std::size_t particle_count = sample.particles.size(), size_count = sample.classes.size();
+  Simulation simulation(scene, std::move(sample));
+  Engine& engine = simulation.engine();
   ObserverStart start;
   int status = exit_code::ok;
   auto finish_failed = [&](int code, const std::string& message) {
@@ -210,7 +193,7 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   };
   if (resuming) {
     try {
-      engine.load_checkpoint((out / kCheckpoint).string());
+      simulation.resume((out / kCheckpoint).string());
       if (!(engine.time() == previous.time))
         throw std::runtime_error("its time " + std::to_string(engine.time()) +
                                  " s differs from the record's " + std::to_string(previous.time) +
@@ -223,13 +206,13 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   }
   if (!options.quiet)
     std::printf("sedem: %s: %zu particles in %zu sizes, %s %.0f s, output in %s\n",
-                scene.name.c_str(), sample.particles.size(), sample.classes.size(),
+                scene.name.c_str(), particle_count, size_count,
                 resuming ? "resuming at" : "to simulate", resuming ? engine.time() : scene.end_time,
                 out.c_str());
 
   RunObservers run_observers;
   try {
-    run_observers = make_observers(scene, sample, out, start);
+    run_observers = make_observers(scene, simulation.sample(), out, start);
   } catch (const render::SeriesError& e) {
     std::cerr << "sedem: cannot resume: the saved series is damaged: " << e.what() << '\n';
     return exit_code::invalid_scene;
@@ -237,9 +220,10 @@ int run_in(const RunOptions& options, RunContext& ctx) {
     return finish_failed(exit_code::output_unwritable,
                          "cannot prepare the outputs in " + out.string() + ": " + e.what());
   }
+  for (auto& o : run_observers.all) simulation.watch(*o);
   if (resuming) {
     try {
-      replay(run_observers, replay_folder(scene, out), engine.time(), sample.particles.size());
+      replay(simulation, replay_folder(scene, out));
     } catch (const std::exception& e) {
       std::cerr << "sedem: cannot resume: the saved series is damaged: " << e.what() << '\n';
       return exit_code::invalid_scene;
@@ -261,62 +245,35 @@ int run_in(const RunOptions& options, RunContext& ctx) {
     return c;
   };
 
-  auto& observers = run_observers.all;
-  EngineWorker worker(engine, schedule_of(observers, scene.end_time, engine.time()),
-                      EngineWorker::capacity_for(engine.particles().size()));
-  // Periodic checkpoints, on the engine's thread while the engine rests.
-  worker.checkpoint_every(scene.checkpoint_interval, [&](const auto& write_engine) {
-    write_checkpoint(out, write_engine, checkpoint_record());
-  });
-  QThread thread;
-  worker.moveToThread(&thread);
   Progress progress(scene.end_time, options.quiet);
-
-  QObject::connect(&thread, &QThread::started, &worker, &EngineWorker::start);
-  QObject::connect(
-      &worker, &EngineWorker::snapshotReady, &qt,
-      [&](std::shared_ptr<const Snapshot> snap) {
-        if (status == exit_code::ok) {
-          try {
-            dispatch(observers, *snap);
-          } catch (const std::bad_alloc& e) {
-            fail(record, status, exit_code::engine_failure, engine_message(e.what()));
-            worker.stop();
-            qt.exit(status);
-          } catch (const std::exception& e) {
-            fail(record, status, exit_code::io_failure,
-                 std::string("writing the outputs failed: ") + e.what());
-            worker.stop();
-            qt.exit(status);
-          }
-        }
-        worker.release();
-      },
-      Qt::QueuedConnection);
-  QObject::connect(&worker, &EngineWorker::progress, &qt,
-                   [&](double t, double steps) { progress.update(t, steps); });
-  QObject::connect(&worker, &EngineWorker::warning, &qt, [&](const QString& message) {
-    std::cerr << "sedem: warning: " << message.toStdString() << '\n';
-  });
-  QObject::connect(&worker, &EngineWorker::failed, &qt, [&](const QString& message) {
-    fail(record, status, exit_code::engine_failure, engine_message(message.toStdString()));
-    qt.exit(status);
-  });
-  QObject::connect(&worker, &EngineWorker::finished, &qt, [&](bool completed) {
-    if (status == exit_code::ok && !completed) status = exit_code::interrupted;
-    qt.exit(status);
-  });
-  QTimer stop_poll;
-  QObject::connect(&stop_poll, &QTimer::timeout, &qt, [&] {
-    if (stop_requested()) worker.stop();
-  });
+  RunControl control;
+  // Two snapshots waiting keep the engine busy while files are written; above a quarter of a
+  // million particles (16 MB a snapshot) one: a million-particle run then holds at most two.
+  control.capacity = particle_count > 250000 ? 1 : 2;
+  control.stop_requested = [] { return stop_requested(); };
+  control.poll = std::chrono::milliseconds(100);
+  control.progress = [&](double t, double steps) { progress.update(t, steps); };
+  // Periodic checkpoints, while the engine rests between two steps.
+  control.checkpoint_every = scene.checkpoint_interval;
+  control.checkpoint = [&](const auto& write_engine) {
+    write_checkpoint(out, write_engine, checkpoint_record());
+  };
+  control.warning = [](const std::string& message) {
+    std::cerr << "sedem: warning: " << message << '\n';
+  };
   install_stop_handlers();
-  stop_poll.start(100);
-  thread.start();
-  qt.exec();
-  worker.abort();
-  thread.quit();
-  thread.wait();
+  try {
+    const RunEnd end = simulation.run(control);
+    if (!end.engine_error.empty())
+      fail(record, status, exit_code::engine_failure, engine_message(end.engine_error));
+    else if (!end.completed)
+      status = exit_code::interrupted;
+  } catch (const std::bad_alloc& e) {
+    fail(record, status, exit_code::engine_failure, engine_message(e.what()));
+  } catch (const std::exception& e) {
+    fail(record, status, exit_code::io_failure,
+         std::string("writing the outputs failed: ") + e.what());
+  }
   progress.done();
 
   // The engine thread has ended: the engine rests between two steps.
@@ -336,7 +293,7 @@ int run_in(const RunOptions& options, RunContext& ctx) {
     }
   }
   try {
-    for (auto& o : observers) o->finish();
+    simulation.observers().finish();
     record.results = write_test_outputs(scene, run_observers, out);
   } catch (const std::bad_alloc& e) {
     fail(record, status, exit_code::engine_failure, engine_message(e.what()));

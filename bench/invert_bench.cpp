@@ -29,8 +29,8 @@
 #include <vector>
 
 #include "core/invert/invert_input.h"
-#include "core/observe/simulate.h"
 #include "core/reference/reference_readings.h"
+#include "core/run/simulation.h"
 #include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/sample/size_classes.h"

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "bench/bench_support.h"
-#include "core/observe/simulate.h"
+#include "core/run/simulation.h"
 #include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"

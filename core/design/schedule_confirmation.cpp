@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/observe/simulate.h"
+#include "core/run/simulation.h"
 #include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene.h"

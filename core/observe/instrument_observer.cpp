@@ -25,10 +25,10 @@ InstrumentObserver::InstrumentObserver(const Scene& scene, const Sample& sample)
 }
 
 void InstrumentObserver::observe(const Snapshot& snapshot) {
-  observe(snapshot.time, snapshot.particles);
+  observe_in_place(snapshot.time, snapshot.particles);
 }
 
-void InstrumentObserver::observe(double time, const Particles& particles) {
+void InstrumentObserver::observe_in_place(double time, const Particles& particles) {
   if (contains_time(reading_times_, time)) panel_.observe(time, particles);
   if (contains_time(profile_times_, time))
     profiles_.push_back(largest_diameter_profile(particles, scene_.cylinder, scene_.fluid,

@@ -5,11 +5,6 @@
 
 namespace sedem {
 
-void dispatch(const std::vector<std::unique_ptr<Observer>>& observers, const Snapshot& snapshot) {
-  for (const auto& o : observers)
-    if (contains_time(o->wanted_times(), snapshot.time)) o->observe(snapshot);
-}
-
 std::vector<double> every(double interval, double end) {
   std::vector<double> times;
   const auto n = static_cast<long>(std::floor(end / interval + 1e-9));

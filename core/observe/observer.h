@@ -19,6 +19,11 @@ class Observer {
   // Times (s) at which this observer wants a snapshot, ascending.
   virtual std::vector<double> wanted_times() const = 0;
   virtual void observe(const Snapshot& snapshot) = 0;
+  // The same, looking at the engine's particles where they are (a run on one thread): an
+  // observer that only reads them overrides it to spare the copy.
+  virtual void observe_in_place(double time, const Particles& particles) {
+    observe(Snapshot{time, particles});
+  }
   // After the last snapshot, or when the run is stopped early: flush what was computed.
   virtual void finish() {}
   // True for an observer whose result depends on every snapshot it has seen (readings,
@@ -26,9 +31,6 @@ class Observer {
   // of per-snapshot files returns false: its files are already there.
   virtual bool accumulates() const { return false; }
 };
-
-// Hands `snapshot` to every observer that asked for its time.
-void dispatch(const std::vector<std::unique_ptr<Observer>>& observers, const Snapshot& snapshot);
 
 // Output times every `interval` from 0 to `end` inclusive (the last one at `end` exactly).
 std::vector<double> every(double interval, double end);

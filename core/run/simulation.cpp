@@ -1,0 +1,107 @@
+#include "core/run/simulation.h"
+
+#include <algorithm>
+
+#include "core/engine/runner.h"
+#include "core/run/stage_setups.h"
+#include "core/sample/sample_builder.h"
+
+namespace sedem {
+
+Simulation::Simulation(const Scene& scene) : Simulation(scene, build_sample(sample_setup(scene))) {}
+
+Simulation::Simulation(const Scene& scene, Sample sample)
+    : scene_(scene), engine_(engine_setup(scene), std::move(sample)) {}
+
+void Simulation::resume(const std::string& checkpoint) {
+  engine_.load_checkpoint(checkpoint);
+}
+
+RunEnd Simulation::run(const RunControl& control) {
+  using clock = std::chrono::steady_clock;
+  const double end = scene_.end_time, from = engine_.time();
+  std::vector<double> times = merge_times({observers_.times(), {end}});
+  std::erase_if(times, [&](double t) { return t > end * (1 + 1e-12) || t < from; });
+
+  EngineRunner runner(engine_, std::move(times), control.capacity);
+  auto report = [&] {
+    if (!control.progress) return;
+    const auto p = runner.progress();
+    control.progress(p.time, p.particle_steps);
+  };
+  const bool periodic = control.checkpoint && control.checkpoint_every > 0;
+  const auto every = std::chrono::duration<double>(control.checkpoint_every);
+  // A checkpoint due more often than the poll is looked for more often.
+  const auto poll = periodic && control.checkpoint_every < 0.2
+                        ? std::min(control.poll, std::chrono::milliseconds(20))
+                        : control.poll;
+  bool stopped = false;
+  auto last_checkpoint = clock::now();
+  runner.start();
+  while (!runner.ended()) {
+    if (control.stop_requested && control.stop_requested()) {
+      stopped = true;
+      break;
+    }
+    if (periodic && clock::now() - last_checkpoint >= every) {
+      // Every snapshot before the engine's time is shown first: a resumed run replays those
+      // and goes on from the saved state.
+      runner.pause();
+      while (auto snapshot = runner.next(std::chrono::milliseconds(0))) observers_.show(*snapshot);
+      runner.pause();
+      try {
+        control.checkpoint([&](const std::string& path) { runner.checkpoint(path); });
+      } catch (const std::exception& e) {
+        if (control.warning)
+          control.warning(std::string("the periodic checkpoint failed: ") + e.what());
+      }
+      runner.resume();
+      last_checkpoint = clock::now();
+    }
+    auto snapshot = runner.next(poll);
+    report();
+    if (snapshot) observers_.show(*snapshot);
+  }
+  runner.stop();  // joins the engine's thread: the engine rests between two steps
+  // Snapshots computed before the stop are results: they are shown too.
+  while (auto snapshot = runner.next(std::chrono::milliseconds(0))) observers_.show(*snapshot);
+  report();
+  RunEnd result;
+  if (runner.state() == EngineRunner::State::failed)
+    result.engine_error = runner.error();
+  else
+    result.completed = runner.state() == EngineRunner::State::finished && !stopped;
+  return result;
+}
+
+void Simulation::run_here() {
+  for (double t : observers_.times()) {
+    if (t < engine_.time()) continue;
+    engine_.advance_to(t);
+    observers_.show_in_place(engine_.time(), engine_.particles());
+    peak_engine_bytes_ = std::max(peak_engine_bytes_, engine_.bytes());
+  }
+  peak_engine_bytes_ = std::max(peak_engine_bytes_, engine_.bytes());
+}
+
+SimulationRun simulate(const Scene& scene, Sample sample, bool keep_last) {
+  const auto start = std::chrono::steady_clock::now();
+  SimulationRun run;
+  run.particles = sample.particles.size();
+  Simulation simulation(scene, std::move(sample));
+  InstrumentObserver instruments(scene, simulation.sample());
+  simulation.watch(instruments);
+  simulation.run_here();
+  const Engine& engine = simulation.engine();
+  run.results = instruments.results();
+  run.stats = engine.stats();
+  if (keep_last) run.last = engine.particles();
+  run.simulated_seconds = engine.time();
+  run.peak_engine_bytes = simulation.peak_engine_bytes();
+  run.threads = engine.threads();
+  run.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+}  // namespace sedem

@@ -1,0 +1,100 @@
+#pragma once
+
+// The one pipeline: a scene's sample, the engine that moves it and the observers that look at
+// it, driven through the union of the observers' times. `sedem run`, the benchmarks and the
+// schedule design's DEM confirmation all go through it. What a run writes (folders, records,
+// checkpoint files) is the caller's; what it computes is here.
+
+#include <chrono>
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/engine/engine.h"
+#include "core/observe/instrument_observer.h"
+#include "core/observe/observer_set.h"
+#include "core/scene/scene.h"
+
+namespace sedem {
+
+// How a run on the engine's own thread is steered from the calling thread.
+struct RunControl {
+  // Snapshots the engine may run ahead of the observers (each one is 64 bytes a particle).
+  std::size_t capacity = 2;
+  // Polled between snapshots, at least every `poll`: true ends the run at the next step.
+  std::function<bool()> stop_requested;
+  std::function<void(double simulated_time, double particle_steps)> progress;
+  std::chrono::milliseconds poll{200};
+  // Every `checkpoint_every` s of wall time (0: never), once the observers have seen every
+  // snapshot before the engine's time and the engine rests between two steps, `checkpoint` is
+  // called with a function that writes the engine's state to a path.
+  double checkpoint_every = 0;
+  std::function<void(const std::function<void(const std::string&)>& save)> checkpoint;
+  // Something went wrong that does not end the run (a periodic checkpoint not written).
+  std::function<void(const std::string& message)> warning;
+};
+
+// How a run ended. `engine_error` is set when the engine failed (an instability, memory).
+struct RunEnd {
+  bool completed = false;  // false: stopped, or failed
+  std::string engine_error;
+};
+
+class Simulation {
+ public:
+  // The sample is the scene's (built from it, or given: a benchmark times its building).
+  explicit Simulation(const Scene& scene);
+  Simulation(const Scene& scene, Sample sample);
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  const Scene& scene() const { return scene_; }
+  // The sample as built (its particles: where the engine has them). Only between runs.
+  const Sample& sample() const { return engine_.sample(); }
+  Engine& engine() { return engine_; }
+  const Engine& engine() const { return engine_; }
+
+  // An observer looks at the run from now on; the caller keeps it alive while it does.
+  void watch(Observer& observer) { observers_.add(observer); }
+  const ObserverSet& observers() const { return observers_; }
+  // Goes on from a checkpoint this scene and sample wrote (Engine::save_checkpoint). The
+  // observers that accumulate are then shown the saved snapshots before it (observers().replay).
+  void resume(const std::string& checkpoint);
+
+  // The engine on a thread of its own, the observers on the calling thread in time order,
+  // through every observer's time to the scene's end. Snapshots taken before a stop are shown
+  // too. An observer's exception ends the run and is rethrown, the engine at rest.
+  RunEnd run(const RunControl& control = {});
+  // The engine on the calling thread, to the last time an observer wants (no further): the
+  // observers look at the engine's particles in place, with no copy (64 MB at a million).
+  void run_here();
+  // The largest Engine::bytes() seen at the observers' times of run_here.
+  std::size_t peak_engine_bytes() const { return peak_engine_bytes_; }
+
+ private:
+  Scene scene_;
+  Engine engine_;
+  ObserverSet observers_;
+  std::size_t peak_engine_bytes_ = 0;
+};
+
+// A whole test with no files and no pictures, on the calling thread: what benchmarks and
+// accuracy studies need.
+struct SimulationRun {
+  TestResults results;
+  EngineStats stats;
+  std::size_t particles = 0;
+  Particles last;  // the particles at the last reading, in sample order (if asked for)
+  double wall_seconds = 0;
+  double simulated_seconds = 0;       // the engine's time at the end (the last reading)
+  std::size_t peak_engine_bytes = 0;  // largest Engine::bytes() seen at the readings
+  int threads = 1;                    // threads the engine ran with
+};
+
+// The instruments read the engine's particles in place. `keep_last` copies them into
+// SimulationRun::last at the end.
+SimulationRun simulate(const Scene& scene, Sample sample, bool keep_last = false);
+
+}  // namespace sedem

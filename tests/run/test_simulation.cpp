@@ -1,0 +1,167 @@
+// The one pipeline: the observers see the snapshots they asked for, in time order, whether
+// the engine runs on its own thread or on the caller's; a stopped run resumed from its
+// checkpoint reads what a run that never stopped reads.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/run/simulation.h"
+#include "core/run/stage_setups.h"
+#include "core/sample/sample_builder.h"
+#include "core/scene/scene_loader.h"
+
+namespace sedem {
+namespace {
+
+Scene small_scene(double end_time = 120) {
+  return load_scene(std::filesystem::path(SEDEM_SOURCE_DIR) / "scenes" / "sample5.toml",
+                    {"sample.simulated_count=600", "run.end_time_s=" + std::to_string(end_time)});
+}
+
+// Remembers the times it was shown and the particle count each time.
+class TimeLog : public Observer {
+ public:
+  explicit TimeLog(std::vector<double> times) : times_(std::move(times)) {}
+  std::string name() const override { return "log"; }
+  std::vector<double> wanted_times() const override { return times_; }
+  void observe(const Snapshot& s) override {
+    seen.push_back(s.time);
+    counts.push_back(s.particles.size());
+  }
+  std::vector<double> seen;
+  std::vector<std::size_t> counts;
+
+ private:
+  std::vector<double> times_;
+};
+
+std::vector<double> dem_percent(const TestResults& r) {
+  std::vector<double> out;
+  for (const auto& test : r.dem())
+    for (const auto& reading : test.rows) out.push_back(reading.percent_finer);
+  return out;
+}
+
+TEST(Simulation, RunShowsEachObserverItsTimesInOrderAndGoesOnToTheEnd) {
+  const Scene scene = small_scene(100);
+  Simulation simulation(scene);
+  TimeLog early({10, 30}), late({20, 30, 250});  // 250 s lies past the end: never shown
+  simulation.watch(early);
+  simulation.watch(late);
+  const RunEnd end = simulation.run();
+  EXPECT_TRUE(end.completed);
+  EXPECT_TRUE(end.engine_error.empty());
+  EXPECT_EQ(early.seen, (std::vector<double>{10, 30}));
+  EXPECT_EQ(late.seen, (std::vector<double>{20, 30}));
+  EXPECT_EQ(early.counts.front(), simulation.sample().particles.size());
+  EXPECT_DOUBLE_EQ(simulation.engine().time(), 100.0);  // the scene's end, wanted or not
+}
+
+TEST(Simulation, EngineOnItsOwnThreadReadsWhatTheCallersThreadReads) {
+  const Scene scene = small_scene();
+  Simulation threaded(scene);
+  InstrumentObserver instruments(scene, threaded.sample());
+  threaded.watch(instruments);
+  ASSERT_TRUE(threaded.run().completed);
+  const SimulationRun here = simulate(scene, build_sample(sample_setup(scene)));
+  const auto a = dem_percent(instruments.results()), b = dem_percent(here.results);
+  ASSERT_FALSE(a.empty());
+  EXPECT_EQ(a, b);
+  EXPECT_EQ(threaded.engine().stats().steps, here.stats.steps);
+}
+
+TEST(Simulation, StopsWhenAskedAndShowsWhatWasComputed) {
+  const Scene scene = small_scene();
+  Simulation simulation(scene);
+  TimeLog log({10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110});
+  simulation.watch(log);
+  RunControl control;
+  control.capacity = 1;
+  control.poll = std::chrono::milliseconds(1);
+  // Asked before the first snapshot is taken: the engine, one snapshot ahead at most, waits
+  // for room in the queue and cannot reach the end.
+  control.stop_requested = [] { return true; };
+  const RunEnd end = simulation.run(control);
+  EXPECT_FALSE(end.completed);
+  EXPECT_TRUE(end.engine_error.empty());
+  EXPECT_LE(log.seen.size(), 2u);
+  EXPECT_LT(simulation.engine().time(), 120.0);
+  for (std::size_t k = 1; k < log.seen.size(); ++k) EXPECT_LT(log.seen[k - 1], log.seen[k]);
+}
+
+TEST(Simulation, ResumedFromItsCheckpointReadsWhatAStraightRunReads) {
+  const Scene scene = small_scene();
+  const auto dir = std::filesystem::path(SEDEM_TEST_OUTPUT) / "simulation_resume";
+  std::filesystem::create_directories(dir);
+  const std::string checkpoint = (dir / "run.checkpoint").string();
+
+  // The first leg stops after the 60 s readings; what it showed is kept as a saved series.
+  std::vector<Snapshot> saved;
+  class Keeper : public Observer {
+   public:
+    Keeper(std::vector<double> t, std::vector<Snapshot>& out) : times_(std::move(t)), out_(out) {}
+    std::string name() const override { return "keeper"; }
+    std::vector<double> wanted_times() const override { return times_; }
+    void observe(const Snapshot& s) override { out_.push_back(s); }
+
+   private:
+    std::vector<double> times_;
+    std::vector<Snapshot>& out_;
+  };
+  {
+    Simulation first(scene);
+    InstrumentObserver instruments(scene, first.sample());
+    Keeper keeper(instruments.wanted_times(), saved);
+    first.watch(instruments);
+    first.watch(keeper);
+    RunControl control;
+    control.capacity = 1;
+    control.poll = std::chrono::milliseconds(1);
+    control.stop_requested = [&] { return !saved.empty() && saved.back().time >= 60; };
+    ASSERT_FALSE(first.run(control).completed);
+    first.engine().save_checkpoint(checkpoint);
+  }
+  const double stopped_at = saved.back().time;
+
+  Simulation resumed(scene);
+  InstrumentObserver instruments(scene, resumed.sample());
+  resumed.watch(instruments);
+  resumed.resume(checkpoint);
+  EXPECT_GE(resumed.engine().time(), stopped_at);
+  ASSERT_TRUE(resumed.observers().needs_replay(resumed.engine().time()));
+  for (const Snapshot& s : saved)
+    if (s.time < resumed.engine().time()) resumed.observers().replay(s);
+  ASSERT_TRUE(resumed.run().completed);
+
+  const SimulationRun straight = simulate(scene, build_sample(sample_setup(scene)));
+  EXPECT_EQ(dem_percent(instruments.results()), dem_percent(straight.results));
+}
+
+TEST(Simulation, PeriodicCheckpointsAreTakenWhileTheEngineRests) {
+  const Scene scene = small_scene(60);
+  const auto dir = std::filesystem::path(SEDEM_TEST_OUTPUT) / "simulation_periodic";
+  std::filesystem::create_directories(dir);
+  Simulation simulation(scene);
+  TimeLog log({10, 20, 30, 40, 50});
+  simulation.watch(log);
+  RunControl control;
+  control.checkpoint_every = 1e-9;  // due at every look
+  int taken = 0;
+  control.checkpoint = [&](const std::function<void(const std::string&)>& save) {
+    save((dir / "periodic.checkpoint").string());
+    ++taken;
+  };
+  ASSERT_TRUE(simulation.run(control).completed);
+  EXPECT_GE(taken, 1);
+  // The last one written loads into an engine of the same scene.
+  Simulation again(scene);
+  again.resume((dir / "periodic.checkpoint").string());
+  EXPECT_GT(again.engine().time(), 0.0);
+  EXPECT_LE(again.engine().time(), 60.0);
+}
+
+}  // namespace
+}  // namespace sedem
