@@ -9,7 +9,7 @@
 namespace sedem {
 
 // The published data of a hydrometer, from which its geometry is derived
-// (docs/instruments.md): defaults are the ASTM E100 152H of DESIGN.md.
+// (docs/instruments.md): defaults are the ASTM E100 152H (docs/physics.md, "The 152H hydrometer").
 struct HydrometerDesign {
   double bulb_length = 0.140;  // L2, m: tip to the top of the bulb (where the stem starts)
   double bulb_volume = 67e-6;  // V_B, m^3

@@ -4,7 +4,7 @@
 
 namespace sedem::drag {
 
-// Di Felice (1994) drag on one sphere, Eqs. 7-9 as pinned down in DESIGN.md:
+// Di Felice (1994) drag on one sphere, Eqs. 7-9 (docs/physics.md, "Drag (Eqs. 7-9)"):
 //   F = 1/2 C_d rho_f (pi phi^2 / 4) eps^2 |u_r| u_r eps^(-chi),
 //   Re = rho_f eps |u_r| phi / mu, C_d = (0.63 + 4.8 / sqrt(Re))^2,
 //   chi = 3.7 - 0.65 exp(-(1.5 - log10 Re)^2 / 2),

@@ -12,7 +12,8 @@ struct Row {
 };
 
 // Table 1 does not use one criterion for t_tr: its 70 um row is the time to 99 % of u_tr,
-// the other rows the time to 95 % (DESIGN.md). Each row is checked with its own.
+// the other rows the time to 95 % (docs/physics.md, "Drag (Eqs. 7-9)"). Each row is checked
+// with its own.
 const Row kTable1[] = {
     {70, 313.4, 400.5, 0.99}, {50, 104.0, 204.3, 0.95}, {25, 26.0, 51.09, 0.95},
     {10, 4.16, 8.17, 0.95},   {5, 1.04, 2.04, 0.95},    {2.5, 0.26, 0.51, 0.95},
