@@ -3,8 +3,8 @@
 #include <filesystem>
 #include <string>
 
-#include "core/model/snapshot.h"
 #include "core/model/cylinder.h"
+#include "core/model/snapshot.h"
 #include "render/mass_bands.h"
 
 namespace sedem::render {

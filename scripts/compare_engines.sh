@@ -18,7 +18,8 @@
 # does not hold (sample build time, list builds, engine bytes) are left empty.
 #
 # This tree's build/ is used for the new side (sedem_bench_scale is built there first).
-# Environment: CMAKE_CXX_COMPILER_LAUNCHER=ccache (and CCACHE_*) speed up the old build (the
+# Environment: OLD_TREE=DIR uses a checkout of OLD_REV that is already there (its build/ is
+# brought up to date) instead of a temporary worktree; CMAKE_CXX_COMPILER_LAUNCHER=ccache (and CCACHE_*) speed up the old build (the
 # worktree goes under $TMPDIR: keep it below CCACHE_BASEDIR for cache hits);
 # JOBS sets the build's parallelism (default: 2).
 set -euo pipefail
@@ -69,16 +70,25 @@ out="$(cd "$out" && pwd)"
 csv="$out/compare_engines.csv"
 jobs="${JOBS:-2}"
 
-# The old commit in a temporary worktree, removed on exit.
+# The old commit in a temporary worktree, removed on exit (or in OLD_TREE, kept).
 tmp="$(mktemp -d "${TMPDIR:-/tmp}/sedem-compare.XXXXXX")"
+old_tree="$tmp/old"
 cleanup() {
-  git -C "$root" worktree remove --force "$tmp/old" >/dev/null 2>&1 || true
+  [ -n "${OLD_TREE:-}" ] || git -C "$root" worktree remove --force "$old_tree" >/dev/null 2>&1 || true
   rm -rf "$tmp"
 }
 trap cleanup EXIT
-echo "compare_engines.sh: building $old_short in $tmp/old" >&2
-git worktree add --detach "$tmp/old" "$old_sha" >/dev/null
-if grep -q "sedem_bench_scale" "$tmp/old/bench/CMakeLists.txt" 2>/dev/null; then
+if [ -n "${OLD_TREE:-}" ]; then
+  old_tree="$(cd "$OLD_TREE" && pwd)"
+  if [ "$(git -C "$old_tree" rev-parse HEAD)" != "$old_sha" ]; then
+    echo "compare_engines.sh: OLD_TREE $old_tree is not at $old_short" >&2
+    exit 1
+  fi
+else
+  git worktree add --detach "$old_tree" "$old_sha" >/dev/null
+fi
+echo "compare_engines.sh: building $old_short in $old_tree" >&2
+if grep -q "sedem_bench_scale" "$old_tree/bench/CMakeLists.txt" 2>/dev/null; then
   old_kind=bench
   old_target=sedem_bench_scale
 else
@@ -87,9 +97,9 @@ else
   command -v jq >/dev/null || { echo "compare_engines.sh: the old side needs jq" >&2; exit 1; }
   echo "compare_engines.sh: $old_short has no sedem_bench_scale; its side is \`sedem run\`" >&2
 fi
-cmake -S "$tmp/old" -B "$tmp/old/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+cmake -S "$old_tree" -B "$old_tree/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DSEDEM_WERROR=OFF >/dev/null
-cmake --build "$tmp/old/build" --target "$old_target" --parallel "$jobs"
+cmake --build "$old_tree/build" --target "$old_target" --parallel "$jobs"
 
 echo "compare_engines.sh: building sedem_bench_scale in $root/build" >&2
 [ -f build/build.ninja ] || cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -111,14 +121,14 @@ append_csv() {
 # One case on the old `sedem run`, written as a bench_scale.csv row.
 run_old_sedem() {
   local sample="$1" count="$2" dir="$3"
-  local args=(run "$tmp/old/scenes/sample$sample.toml" --out "$dir" --quiet
+  local args=(run "$old_tree/scenes/sample$sample.toml" --out "$dir" --quiet
     --set output.frames=false --set output.particles=false --set output.fields=false
     --set "sample.simulated_count=$count")
   [ -z "$end_time" ] || args+=(--set "run.end_time_s=$end_time")
   [ -z "$threads" ] || args+=(--set "integrator.threads=$threads")
   local s
   for s in "${sets[@]+"${sets[@]}"}"; do args+=(--set "$s"); done
-  "$tmp/old/build/app/sedem" "${args[@]}" || true
+  "$old_tree/build/app/sedem" "${args[@]}" || true
   local json="$dir/run.json"
   [ -f "$json" ] || return 0
   {
@@ -150,7 +160,7 @@ run_case() {  # side sample count
     "$new_bench" --samples "$sample" --counts "$count" --label "$new_label" --out "$dir" \
       "${common[@]+"${common[@]}"}" || true
   elif [ "$old_kind" = bench ]; then
-    "$tmp/old/build/bench/sedem_bench_scale" --samples "$sample" --counts "$count" \
+    "$old_tree/build/bench/sedem_bench_scale" --samples "$sample" --counts "$count" \
       --label "$old_label" --out "$dir" "${common[@]+"${common[@]}"}" || true
   else
     run_old_sedem "$sample" "$count" "$dir"

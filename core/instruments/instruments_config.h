@@ -6,8 +6,6 @@
 
 namespace sedem {
 
-class Schema;
-
 // The three laboratory tests of Sect. 4.5 and the layered field they read (Eq. 20).
 struct InstrumentsConfig {
   std::int64_t layers = 4000;  // n_ly
@@ -37,8 +35,6 @@ struct InstrumentsConfig {
   double reference_richardson_zaki_exponent = 4.65;
   double reference_bed_packing = 0.6;
 };
-
-void describe(InstrumentsConfig& config, Schema& schema);
 
 // The height (m above the bottom of a column `height` tall) below which none of the enabled
 // instruments reads, less a 1 cm margin: the bottom of the hydrometer's bulb at its deepest

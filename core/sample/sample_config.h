@@ -6,8 +6,6 @@
 
 namespace sedem {
 
-class Schema;
-
 // Above this many particles a scene is refused (memory, and no engine would finish).
 inline constexpr std::int64_t kMaxSimulatedCount = 100'000'000;
 
@@ -45,7 +43,5 @@ struct SampleConfig {
   GradingConfig grading;
   PlacementConfig placement;
 };
-
-void describe(SampleConfig& config, Schema& schema);
 
 }  // namespace sedem

@@ -1,5 +1,7 @@
 #include "core/scene/scene.h"
 
+#include "core/scene/stage_keys.h"
+
 namespace sedem {
 
 static void describe(Fluid& f, Schema& s) {

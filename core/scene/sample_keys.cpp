@@ -1,4 +1,4 @@
-#include "core/sample/sample_config.h"
+#include "core/scene/stage_keys.h"
 
 #include "core/scene/schema.h"
 
