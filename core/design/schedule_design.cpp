@@ -275,7 +275,8 @@ Scene with_sizes(Scene scene, std::int64_t size_count) {
 ScheduleReader::ScheduleReader(const Scene& scene, std::int64_t size_count) {
   const Scene s = with_sizes(scene, size_count);
   Sample sample = planned_sample(s);
-  ReferenceSolution reference = make_reference(s, sample, reference_options(s));
+  const TestSetup setup = test_setup(s);
+  ReferenceSolution reference = make_reference(setup, sample, reference_options(setup));
   state_.reset(new State{s, std::move(sample), std::move(reference)});
 }
 
@@ -283,8 +284,8 @@ ScheduleReader::~ScheduleReader() = default;
 
 std::vector<Reading> ScheduleReader::readings(const std::string& test,
                                               const ReadingSchedule& schedule) const {
-  auto tests = reference_readings(scene_for_schedule(state_->scene, test, schedule), state_->sample,
-                                  state_->reference);
+  auto tests = reference_readings(test_setup(scene_for_schedule(state_->scene, test, schedule)),
+                                  state_->sample, state_->reference);
   if (tests.size() != 1) throw std::logic_error("ScheduleReader: no " + test);
   return std::move(tests.front().rows);
 }

@@ -8,7 +8,7 @@ namespace sedem {
 
 SimulationRun simulate(const Scene& scene, Sample sample, bool keep_last) {
   const auto start = std::chrono::steady_clock::now();
-  InstrumentObserver instruments(scene, sample);
+  InstrumentObserver instruments(test_setup(scene), sample);
   SimulationRun run;
   run.particles = sample.particles.size();
   Engine engine(engine_setup(scene), std::move(sample));

@@ -4,6 +4,7 @@
 
 #include "core/engine/engine.h"
 #include "core/observe/instrument_observer.h"
+#include "core/scene/scene.h"
 
 namespace sedem {
 
