@@ -11,8 +11,9 @@
 
 #include "app/exit_codes.h"
 #include "app/run_folder.h"
-#include "core/design/schedule_confirmation.h"
 #include "core/design/schedule_design.h"
+#include "core/run/schedule_confirmation.h"
+#include "core/run/stage_setups.h"
 #include "core/scene/scene.h"
 #include "core/scene/scene_loader.h"
 #include "render/plot.h"
@@ -87,7 +88,8 @@ int run_design(const DesignCommandOptions& o) {
     throw std::invalid_argument("--readings " + std::to_string(o.readings) + ": allowed 2 to 200");
   options.readings = o.readings == -1 ? 0 : std::size_t(o.readings);
   options.size_count = o.sizes;
-  check_design_options(scene, options);
+  const TestSetup setup = test_setup(scene);
+  check_design_options(setup, options);
   if (o.dem_count < -1 || o.dem_count > 100'000'000)
     throw std::invalid_argument("--dem-count " + std::to_string(o.dem_count) +
                                 ": allowed 0 (no DEM run) to 100000000");
@@ -96,7 +98,7 @@ int run_design(const DesignCommandOptions& o) {
   fs::create_directories(out);
 
   const auto start = std::chrono::steady_clock::now();
-  const ScheduleDesign design = design_schedule(scene, options);
+  const ScheduleDesign design = design_schedule(setup, sample_setup(scene), options);
   const double search_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::int64_t dem_count = o.dem_count < 0 ? scene.sample.simulated_count : o.dem_count;

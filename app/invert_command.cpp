@@ -114,7 +114,7 @@ int run_invert(const InvertOptions& o) {
       times.push_back(row[0]);
       raw.push_back(format.run_to_lab * row[1]);
     }
-    auto recorded = invert::record_simulated(scene, test, times, raw, o.resolution);
+    auto recorded = invert::record_simulated(test_setup(scene), test, times, raw, o.resolution);
     data = std::move(recorded.data);
     standard = std::move(recorded.standard);
     truth = plan_sample(sample_setup(scene)).classes;
@@ -133,8 +133,8 @@ int run_invert(const InvertOptions& o) {
   } else {
     data = invert::read_measurements_csv(in, test);
     scene = make_setup(o, o.temperature_c.value_or(20.0));
-    invert::validate_measurements(scene, test, data, {});
-    standard = invert::standard_reduction(scene, test, data);
+    invert::validate_measurements(test_setup(scene), test, data, {});
+    standard = invert::standard_reduction(test_setup(scene), test, data);
   }
   invert::InversionOptions options;
   options.resolution = o.resolution;
@@ -142,7 +142,7 @@ int run_invert(const InvertOptions& o) {
   options.bootstrap = o.replicas;
   options.coverage = o.coverage;
   options.seed = o.seed;
-  const auto curve = invert::invert_readings(scene, test, data, options);
+  const auto curve = invert::invert_readings(test_setup(scene), test, data, options);
 
   std::error_code ec;
   fs::create_directories(o.out, ec);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/fields/layer_fields.h"
+#include "core/run/stage_setups.h"
 
 namespace sedem::app {
 
@@ -89,7 +90,7 @@ RunObservers make_observers(const Scene& scene, const Sample& sample,
   RunObservers r;
   const auto& ins = scene.instruments;
   if (ins.hydrometer || ins.buoyancy || ins.pipette) {
-    auto instruments = std::make_unique<InstrumentObserver>(scene, sample);
+    auto instruments = std::make_unique<InstrumentObserver>(test_setup(scene), sample);
     r.instruments = instruments.get();
     r.all.push_back(std::move(instruments));
   }

@@ -60,7 +60,7 @@ invert::RecordedTest recorded(const Scene& scene, Test test, const Case& c,
                               const std::vector<double>& shift) {
   std::vector<double> raw = c.raw;
   for (std::size_t i = 0; i < shift.size() && i < raw.size(); ++i) raw[i] += shift[i];
-  return invert::record_simulated(scene, test, c.times, raw);
+  return invert::record_simulated(test_setup(scene), test, c.times, raw);
 }
 
 }  // namespace
@@ -116,7 +116,7 @@ int main(int argc, char** argv) {
       sample.section_mass = scene.sample.total_mass * scene.cylinder.section_fraction;
       sample.classes = discretise(GradingCurve(scene.sample.grading), scene.sample.size_count,
                                   sample.section_mass, sample.particle_density);
-      readings = reference_readings(scene, sample);
+      readings = reference_readings(test_setup(scene), sample);
     }
     for (const auto& name : tests) {
       const Test test = invert::parse_test(name);
@@ -136,7 +136,7 @@ int main(int argc, char** argv) {
       options.refine = refine;
       options.tau = tau;
       const auto t0 = std::chrono::steady_clock::now();
-      const auto curve = invert::invert_readings(scene, test, data, options);
+      const auto curve = invert::invert_readings(test_setup(scene), test, data, options);
       const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       // The readings' bounds at the standard reduction's diameters: whether they hold the truth,
@@ -178,8 +178,8 @@ int main(int argc, char** argv) {
           std::vector<double> shift;
           for (std::size_t i = 0; i < c.raw.size(); ++i) shift.push_back(noise(rng));
           o.seed = std::uint64_t(k + 1);
-          const auto noisy =
-              invert::invert_readings(scene, test, recorded(scene, test, c, shift).data, o);
+          const auto noisy = invert::invert_readings(test_setup(scene), test,
+                                                     recorded(scene, test, c, shift).data, o);
           for (double d : noisy.reading_diameter) {
             const double truth = true_percent_finer(sample.classes, d);
             if (truth <= 0.5 || truth >= 99.5) continue;

@@ -103,11 +103,12 @@ int main(int argc, char** argv) {
             velocity.push_back(speed * reference_terminal_velocity(scene.forces.drag, c.diameter,
                                                                    sample.particle_density,
                                                                    scene.fluid));
-          InstrumentPanel panel(scene, sample);
+          const TestSetup setup = test_setup(scene);
+          InstrumentPanel panel(setup, sample);
           for (double t : panel.reading_times())
             panel.observe(t, settled(sample.particles, velocity, t));
           const Granulometry g =
-              compare(panel.readings(), reference_readings(scene, sample), sample.classes);
+              compare(panel.readings(), reference_readings(setup, sample), sample.classes);
           for (const auto& t : g.tests) {
             Stats& s = by_test[t.test];
             s.sum += t.error;

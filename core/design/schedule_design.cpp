@@ -7,10 +7,8 @@
 #include <stdexcept>
 
 #include "core/reference/reference_readings.h"
-#include "core/run/stage_setups.h"
 #include "core/sample/grading_curve.h"
 #include "core/sample/sample_builder.h"
-#include "core/scene/scene.h"
 
 namespace sedem {
 
@@ -28,21 +26,22 @@ bool is_test(const std::string& test) {
   return test == "hydrometer" || test == "buoyancy" || test == "pipette";
 }
 
-bool enabled(const Scene& scene, const std::string& test) {
-  if (test == "hydrometer") return scene.instruments.hydrometer;
-  if (test == "buoyancy") return scene.instruments.buoyancy;
-  return scene.instruments.pipette;
+bool enabled(const InstrumentsConfig& instruments, const std::string& test) {
+  if (test == "hydrometer") return instruments.hydrometer;
+  if (test == "buoyancy") return instruments.buoyancy;
+  return instruments.pipette;
 }
 
-const std::vector<double>& standard_times(const Scene& scene, const std::string& test) {
-  if (test == "hydrometer") return scene.instruments.hydrometer_times;
-  if (test == "buoyancy") return scene.instruments.buoyancy_times;
-  return scene.instruments.pipette_times;
+const std::vector<double>& standard_times(const InstrumentsConfig& instruments,
+                                          const std::string& test) {
+  if (test == "hydrometer") return instruments.hydrometer_times;
+  if (test == "buoyancy") return instruments.buoyancy_times;
+  return instruments.pipette_times;
 }
 
-double standard_depth(const Scene& scene, const std::string& test) {
-  if (test == "buoyancy") return scene.instruments.buoyancy_depth_fraction;
-  if (test == "pipette") return scene.instruments.pipette_depth_fraction;
+double standard_depth(const InstrumentsConfig& instruments, const std::string& test) {
+  if (test == "buoyancy") return instruments.buoyancy_depth_fraction;
+  if (test == "pipette") return instruments.pipette_depth_fraction;
   return std::numeric_limits<double>::quiet_NaN();
 }
 
@@ -206,17 +205,17 @@ std::vector<double> clock_times(double first, double last) {
   return t;
 }
 
-void check_design_options(const Scene& scene, const DesignOptions& options) {
+void check_design_options(const TestSetup& setup, const DesignOptions& options) {
   if (!is_test(options.test))
     throw std::invalid_argument("--test " + options.test +
                                 ": allowed hydrometer, buoyancy or pipette");
-  if (!enabled(scene, options.test))
+  if (!enabled(setup.instruments, options.test))
     throw std::invalid_argument("--test " + options.test + ": the scene disables it (instruments." +
                                 options.test + ".enabled = false)");
   if (options.readings == 1 || options.readings > 200)
     throw std::invalid_argument("--readings " + std::to_string(options.readings) +
                                 ": allowed 2 to 200 (0: the standard's count)");
-  if (standard_times(scene, options.test).size() < 2)
+  if (standard_times(setup.instruments, options.test).size() < 2)
     throw std::invalid_argument("instruments." + options.test +
                                 ".times_min: a design needs a standard of 2 readings or more");
   if (options.size_count < 1 || options.size_count > 100000)
@@ -224,10 +223,8 @@ void check_design_options(const Scene& scene, const DesignOptions& options) {
                                 ": allowed 1 to 100000");
 }
 
-Scene scene_for_schedule(const Scene& scene, const std::string& test,
-                         const ReadingSchedule& schedule) {
-  Scene s = scene;
-  auto& in = s.instruments;
+InstrumentsConfig instruments_for_schedule(InstrumentsConfig in, const std::string& test,
+                                           const ReadingSchedule& schedule) {
   in.hydrometer = test == "hydrometer";
   in.buoyancy = test == "buoyancy";
   in.pipette = test == "pipette";
@@ -244,61 +241,61 @@ Scene scene_for_schedule(const Scene& scene, const std::string& test,
   in.profile_times.erase(std::remove_if(in.profile_times.begin(), in.profile_times.end(),
                                         [&](double t) { return t > schedule.times.back(); }),
                          in.profile_times.end());
-  s.end_time = schedule.times.back();
-  return s;
+  return in;
 }
 
 struct ScheduleReader::State {
-  Scene scene;
+  TestSetup setup;
   Sample sample;
   ReferenceSolution reference;
 };
 
 namespace {
 
-Sample planned_sample(const Scene& scene) {
-  const SamplePlan plan = plan_sample(sample_setup(scene));
+Sample planned_sample(const SampleSetup& setup) {
+  const SamplePlan plan = plan_sample(setup);
   Sample sample;
   sample.classes = plan.classes;
-  sample.particle_density = scene.sample.particle_density;
+  sample.particle_density = setup.sample.particle_density;
   sample.section_mass = plan.section_mass;
   return sample;
 }
 
-Scene with_sizes(Scene scene, std::int64_t size_count) {
-  scene.sample.size_count = size_count;
-  return scene;
+SampleSetup with_sizes(SampleSetup setup, std::int64_t size_count) {
+  setup.sample.size_count = size_count;
+  return setup;
 }
 
 }  // namespace
 
-ScheduleReader::ScheduleReader(const Scene& scene, std::int64_t size_count) {
-  const Scene s = with_sizes(scene, size_count);
-  Sample sample = planned_sample(s);
-  ReferenceSolution reference = make_reference(s, sample, reference_options(s));
-  state_.reset(new State{s, std::move(sample), std::move(reference)});
+ScheduleReader::ScheduleReader(const TestSetup& setup, const SampleSetup& sample,
+                               std::int64_t size_count) {
+  Sample planned = planned_sample(with_sizes(sample, size_count));
+  ReferenceSolution reference = make_reference(setup, planned, reference_options(setup));
+  state_.reset(new State{setup, std::move(planned), std::move(reference)});
 }
 
 ScheduleReader::~ScheduleReader() = default;
 
 std::vector<Reading> ScheduleReader::readings(const std::string& test,
                                               const ReadingSchedule& schedule) const {
-  auto tests = reference_readings(scene_for_schedule(state_->scene, test, schedule), state_->sample,
-                                  state_->reference);
+  TestSetup only = state_->setup;
+  only.instruments = instruments_for_schedule(only.instruments, test, schedule);
+  auto tests = reference_readings(only, state_->sample, state_->reference);
   if (tests.size() != 1) throw std::logic_error("ScheduleReader: no " + test);
   return std::move(tests.front().rows);
 }
 
-TruthGrid truth_grid(const Scene& scene, double low, double high) {
+TruthGrid truth_grid(const GradingConfig& grading, double low, double high) {
   TruthGrid grid;
   grid.low = low;
   grid.high = high;
-  const auto curve = std::make_shared<GradingCurve>(scene.sample.grading);
+  const auto curve = std::make_shared<GradingCurve>(grading);
   grid.percent_at = [curve](double d) { return curve->percent_finer(d); };
   for (std::size_t k = 0; k < kGridPoints; ++k)
     grid.diameters.push_back(low * std::pow(high / low, double(k) / double(kGridPoints - 1)));
-  if (scene.sample.grading.family == "table")
-    for (double d : scene.sample.grading.diameters)
+  if (grading.family == "table")
+    for (double d : grading.diameters)
       if (d > low && d < high) grid.diameters.push_back(d);
   std::sort(grid.diameters.begin(), grid.diameters.end());
   grid.diameters.erase(std::unique(grid.diameters.begin(), grid.diameters.end()),
@@ -310,23 +307,24 @@ TruthGrid truth_grid(const Scene& scene, double low, double high) {
   return grid;
 }
 
-ScheduleDesign design_schedule(const Scene& scene, const DesignOptions& options) {
-  check_design_options(scene, options);
+ScheduleDesign design_schedule(const TestSetup& setup, const SampleSetup& sample,
+                               const DesignOptions& options) {
+  check_design_options(setup, options);
   ScheduleDesign design;
   design.test = options.test;
-  design.standard.times = standard_times(scene, options.test);
+  design.standard.times = standard_times(setup.instruments, options.test);
   std::sort(design.standard.times.begin(), design.standard.times.end());
-  design.standard.depth_fraction = standard_depth(scene, options.test);
+  design.standard.depth_fraction = standard_depth(setup.instruments, options.test);
   const std::size_t count = options.readings == 0 ? design.standard.times.size() : options.readings;
 
-  const ScheduleReader reader(scene, options.size_count);
+  const ScheduleReader reader(setup, sample, options.size_count);
   const auto standard_rows = reader.readings(options.test, design.standard);
   double low = kInfinity, high = 0;
   for (const auto& r : standard_rows) {
     low = std::min(low, r.diameter);
     high = std::max(high, r.diameter);
   }
-  design.truth = truth_grid(scene, low, high);
+  design.truth = truth_grid(sample.sample.grading, low, high);
   design.standard_score = score_readings(standard_rows, design.truth);
 
   const double first = design.standard.times.front();

@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "core/instruments/granulometry.h"
+#include "core/instruments/test_setup.h"
+#include "core/sample/sample_setup.h"
 
 namespace sedem {
-
-struct Scene;
 
 // Designing a test's reading schedule (docs/design.md): the times (and, for the sphere and
 // the pipette, the one depth) at which a laboratory should read so that the grading curve
@@ -68,11 +68,11 @@ struct DesignOptions {
 };
 
 // Throws std::invalid_argument (one line naming the option, the value and what is allowed)
-// for an unknown test, a test the scene disables, or a reading count below 2.
-void check_design_options(const Scene& scene, const DesignOptions& options);
+// for an unknown test, a test the setup disables, or a reading count below 2.
+void check_design_options(const TestSetup& setup, const DesignOptions& options);
 
 // The three schedules of a design and their scores against the truth, from the reference
-// solution (the near-exact continuum of the scene's physics).
+// solution (the near-exact continuum of the setup's physics).
 struct ScheduleDesign {
   std::string test;
   TruthGrid truth;
@@ -86,24 +86,25 @@ struct ScheduleDesign {
   std::size_t schedules_searched = 0;  // candidate schedules' worth of work: pairs x depths
 };
 
-// The standard schedule is the scene's; the floor reads every minute over the standard's
+// The standard schedule is the setup's; the floor reads every minute over the standard's
 // times at its depth (what the instrument's own averaging leaves, whatever the schedule);
 // the designed schedule has the same number of readings (or options.readings), starts no
 // earlier than the standard, ends within options.last_time, reads at clock_times, spans the
 // standard's diameters, and has the least worst error: a minimax path through the candidate
 // times (dynamic programming over pairs of readings, exact on the candidates).
-ScheduleDesign design_schedule(const Scene& scene, const DesignOptions& options);
+ScheduleDesign design_schedule(const TestSetup& setup, const SampleSetup& sample,
+                               const DesignOptions& options);
 
-// The scene with only `test` enabled, reading at `schedule`'s times and depth, and the run
-// ending at its last reading.
-Scene scene_for_schedule(const Scene& scene, const std::string& test,
-                         const ReadingSchedule& schedule);
+// The instruments with only `test` enabled, reading at `schedule`'s times and depth (the
+// profiles of Fig. 12 kept within them).
+InstrumentsConfig instruments_for_schedule(InstrumentsConfig in, const std::string& test,
+                                           const ReadingSchedule& schedule);
 
-// The reference solution of the scene's grading curve cut into `size_count` sizes, solved once
-// (its fronts cost O(sizes^2)) and read by any schedule of any test.
+// The reference solution of the sample's grading curve cut into `size_count` sizes, solved once
+// (its fronts cost O(sizes^2)) and read by any schedule of any test of the setup.
 class ScheduleReader {
  public:
-  ScheduleReader(const Scene& scene, std::int64_t size_count);
+  ScheduleReader(const TestSetup& setup, const SampleSetup& sample, std::int64_t size_count);
   ~ScheduleReader();
   std::vector<Reading> readings(const std::string& test, const ReadingSchedule& schedule) const;
 
@@ -114,6 +115,6 @@ class ScheduleReader {
 
 // The truth grid over [low, high]: log-spaced points, the table's own points within the range
 // (where a piecewise-linear curve's largest gap to a straight segment lies) and both ends.
-TruthGrid truth_grid(const Scene& scene, double low, double high);
+TruthGrid truth_grid(const GradingConfig& grading, double low, double high);
 
 }  // namespace sedem

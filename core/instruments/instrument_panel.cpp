@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/scene/scene.h"
-
 namespace sedem {
 
 namespace {
@@ -17,28 +15,28 @@ bool due(const std::vector<double>& times, double t) {
 
 }  // namespace
 
-InstrumentPanel::InstrumentPanel(const Scene& scene, const Sample& sample)
-    : hydrometer_on_(scene.instruments.hydrometer),
-      buoyancy_on_(scene.instruments.buoyancy),
-      pipette_on_(scene.instruments.pipette),
-      hydrometer_times_(scene.instruments.hydrometer_times),
-      buoyancy_times_(scene.instruments.buoyancy_times),
-      pipette_times_(scene.instruments.pipette_times),
-      layers_(static_cast<std::size_t>(scene.instruments.layers)) {
-  const auto& cfg = scene.instruments;
-  suspension_.fluid = scene.fluid;
-  suspension_.cylinder = scene.cylinder;
+InstrumentPanel::InstrumentPanel(const TestSetup& setup, const Sample& sample)
+    : hydrometer_on_(setup.instruments.hydrometer),
+      buoyancy_on_(setup.instruments.buoyancy),
+      pipette_on_(setup.instruments.pipette),
+      hydrometer_times_(setup.instruments.hydrometer_times),
+      buoyancy_times_(setup.instruments.buoyancy_times),
+      pipette_times_(setup.instruments.pipette_times),
+      layers_(static_cast<std::size_t>(setup.instruments.layers)) {
+  const auto& cfg = setup.instruments;
+  suspension_.fluid = setup.fluid;
+  suspension_.cylinder = setup.cylinder;
   suspension_.particle_density = sample.particle_density;
-  suspension_.initial_concentration = sample.section_mass / scene.cylinder.section_volume();
+  suspension_.initial_concentration = sample.section_mass / setup.cylinder.section_volume();
   HydrometerDesign design;
   design.tip_length = cfg.hydrometer_tip_length;
   design.shoulder_length = cfg.hydrometer_shoulder_length;
   hydrometer_ = make_hydrometer(design);
   sphere_.diameter = cfg.sphere_diameter;
   sphere_.mass = cfg.sphere_mass;
-  sphere_.centre_depth = cfg.buoyancy_depth_fraction * scene.cylinder.height;
+  sphere_.centre_depth = cfg.buoyancy_depth_fraction * setup.cylinder.height;
   pipette_.volume = cfg.pipette_volume;
-  pipette_.depth = cfg.pipette_depth_fraction * scene.cylinder.height;
+  pipette_.depth = cfg.pipette_depth_fraction * setup.cylinder.height;
 }
 
 std::vector<double> InstrumentPanel::reading_times() const {

@@ -3,18 +3,17 @@
 #include <vector>
 
 #include "core/instruments/granulometry.h"
+#include "core/instruments/test_setup.h"
 #include "core/model/particles.h"
 #include "core/model/sample.h"
 
 namespace sedem {
 
-struct Scene;
-
-// The enabled tests of a scene, set up from its InstrumentsConfig, reading a field or the
+// The enabled tests of a TestSetup, built from its InstrumentsConfig, reading a field or the
 // particles at their times. It never modifies what it reads.
 class InstrumentPanel {
  public:
-  InstrumentPanel(const Scene& scene, const Sample& sample);
+  InstrumentPanel(const TestSetup& setup, const Sample& sample);
 
   const Suspension& suspension() const { return suspension_; }
   const HydrometerGeometry& hydrometer() const { return hydrometer_; }

@@ -4,8 +4,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/scene/schema.h"
-
 namespace sedem {
 
 double lowest_measured_height(const InstrumentsConfig& in, double height) {

@@ -97,37 +97,37 @@ std::vector<double> bin_widths(const Grid& grid) {
   return w;
 }
 
-ForwardModel::ForwardModel(const Scene& scene, Test test, Grid grid, std::vector<double> times,
+ForwardModel::ForwardModel(const TestSetup& setup, Test test, Grid grid, std::vector<double> times,
                            int subclasses)
-    : scene_(scene),
+    : setup_(setup),
       test_(test),
       grid_(std::move(grid)),
       times_(std::move(times)),
       subclasses_(subclasses),
-      layers_(std::size_t(scene.instruments.layers)) {
+      layers_(std::size_t(setup.instruments.layers)) {
   if (grid_.nodes.size() < 2) throw std::invalid_argument("forward model: two grid nodes or more");
   if (subclasses_ < 1) throw std::invalid_argument("forward model: one subclass per bin or more");
-  suspension_.fluid = scene.fluid;
-  suspension_.cylinder = scene.cylinder;
-  suspension_.particle_density = scene.sample.particle_density;
+  suspension_.fluid = setup.fluid;
+  suspension_.cylinder = setup.cylinder;
+  suspension_.particle_density = setup.particle_density;
   suspension_.initial_concentration =
-      scene.sample.total_mass / (std::numbers::pi / 4.0 * scene.cylinder.diameter *
-                                 scene.cylinder.diameter * scene.cylinder.height);
-  {  // the instruments as the simulation's panel builds them from the scene
+      setup.total_mass / (std::numbers::pi / 4.0 * setup.cylinder.diameter *
+                          setup.cylinder.diameter * setup.cylinder.height);
+  {  // the instruments as the simulation's panel builds them from the setup
     Sample geometry;
-    geometry.particle_density = scene.sample.particle_density;
-    const InstrumentPanel panel(scene, geometry);
+    geometry.particle_density = setup.particle_density;
+    const InstrumentPanel panel(setup, geometry);
     hydrometer_ = panel.hydrometer();
     sphere_ = panel.sphere();
     pipette_ = panel.pipette();
   }
-  clear_reading_ = hydrometer_.reading_at(tip_depth_in_uniform(hydrometer_, scene.fluid.density) -
+  clear_reading_ = hydrometer_.reading_at(tip_depth_in_uniform(hydrometer_, setup.fluid.density) -
                                           hydrometer_.bulb_length);
 
   // Each bin's size classes, evenly spaced in log d across it.
-  const auto& cfg = scene.instruments;
+  const auto& cfg = setup.instruments;
   const auto& d = grid_.nodes;
-  local_voidage_ = cfg.reference_settling == "local_voidage" && scene.forces.drag == "di_felice";
+  local_voidage_ = cfg.reference_settling == "local_voidage" && setup.drag == "di_felice";
   hindrance_ =
       cfg.reference_settling == "richardson_zaki"
           ? std::pow(1.0 - suspension_.initial_concentration / suspension_.particle_density,
@@ -140,8 +140,8 @@ ForwardModel::ForwardModel(const Scene& scene, Test test, Grid grid, std::vector
       const double diameter = lo * std::pow(hi / lo, (s + 0.5) / subclasses_);
       class_diameter_.push_back(diameter);
       class_velocity_.push_back(
-          hindrance_ * reference_terminal_velocity(scene.forces.drag, diameter,
-                                                   suspension_.particle_density, scene.fluid));
+          hindrance_ * reference_terminal_velocity(setup.drag, diameter,
+                                                   suspension_.particle_density, setup.fluid));
     }
   }
 }
@@ -174,23 +174,23 @@ std::vector<SettlingClass> ForwardModel::classes_of(const Eigen::VectorXd& x) co
 ReferenceSolution ForwardModel::reference(const Eigen::VectorXd& x) const {
   const auto classes = classes_of(x);
   const double rho_p = suspension_.particle_density;
-  const double packing = scene_.instruments.reference_bed_packing;
+  const double packing = setup_.instruments.reference_bed_packing;
   if (local_voidage_)
     return ReferenceSolution::from_fronts(
-        held_.order.empty() ? local_voidage_fronts(classes, rho_p, scene_.fluid, scene_.forces.drag)
+        held_.order.empty() ? local_voidage_fronts(classes, rho_p, setup_.fluid, setup_.drag)
                             : fronts_with_held_speeds(classes, held_),
-        scene_.cylinder, rho_p, packing);
-  return ReferenceSolution(classes, scene_.cylinder, rho_p, packing);
+        setup_.cylinder, rho_p, packing);
+  return ReferenceSolution(classes, setup_.cylinder, rho_p, packing);
 }
 
 void ForwardModel::hold_speeds_at(const Eigen::VectorXd& x) {
   if (!local_voidage_) return;
-  local_voidage_fronts(classes_of(x), suspension_.particle_density, scene_.fluid,
-                       scene_.forces.drag, &held_);
+  local_voidage_fronts(classes_of(x), suspension_.particle_density, setup_.fluid, setup_.drag,
+                       &held_);
 }
 
 double ForwardModel::read(const Eigen::VectorXd& x, double time) const {
-  return read_fields(reference(x).layer_fields(time, layers_, scene_.fluid));
+  return read_fields(reference(x).layer_fields(time, layers_, setup_.fluid));
 }
 
 Eigen::VectorXd ForwardModel::readings(const Eigen::VectorXd& x) const {
@@ -200,7 +200,7 @@ Eigen::VectorXd ForwardModel::readings(const Eigen::VectorXd& x) const {
   const ReferenceSolution settled = reference(x);
   Eigen::VectorXd r(Eigen::Index(times_.size()));
   for (std::size_t i = 0; i < times_.size(); ++i)
-    r(Eigen::Index(i)) = read_fields(settled.layer_fields(times_[i], layers_, scene_.fluid));
+    r(Eigen::Index(i)) = read_fields(settled.layer_fields(times_[i], layers_, setup_.fluid));
   return r;
 }
 
@@ -227,7 +227,7 @@ double ForwardModel::empty_reading() const {
     case Test::hydrometer:
       return 0.0;
     case Test::buoyancy:
-      return (sphere_.mass - scene_.fluid.density * sphere_.volume()) * 1e3;
+      return (sphere_.mass - setup_.fluid.density * sphere_.volume()) * 1e3;
     case Test::pipette:
       return 0.0;
   }
@@ -243,7 +243,7 @@ double ForwardModel::full_reading() const {
 double ForwardModel::nominal_depth() const {
   switch (test_) {
     case Test::hydrometer:
-      return tip_depth_in_uniform(hydrometer_, scene_.fluid.density) -
+      return tip_depth_in_uniform(hydrometer_, setup_.fluid.density) -
              0.5 * hydrometer_.bulb_length;
     case Test::buoyancy:
       return sphere_.centre_depth;
@@ -262,10 +262,9 @@ double ForwardModel::reading_depth(double value) const {
 double ForwardModel::front_speed(double diameter) const {
   const double rho_p = suspension_.particle_density;
   if (local_voidage_)
-    return drag::di_felice_terminal_velocity(diameter, rho_p, scene_.fluid,
+    return drag::di_felice_terminal_velocity(diameter, rho_p, setup_.fluid,
                                              1.0 - suspension_.initial_concentration / rho_p);
-  return hindrance_ *
-         reference_terminal_velocity(scene_.forces.drag, diameter, rho_p, scene_.fluid);
+  return hindrance_ * reference_terminal_velocity(setup_.drag, diameter, rho_p, setup_.fluid);
 }
 
 double ForwardModel::model_diameter(double time, double value) const {

@@ -9,8 +9,8 @@
 #include "core/instruments/hydrometer.h"
 #include "core/instruments/pipette.h"
 #include "core/instruments/suspension.h"
+#include "core/instruments/test_setup.h"
 #include "core/reference/reference_field.h"
-#include "core/scene/scene.h"
 
 namespace sedem::invert {
 
@@ -50,22 +50,22 @@ Eigen::VectorXd split_shares(const Eigen::VectorXd& x, int parts);
 // The widths of the bins in ln d: ln 10 for the finest, ln 4 for the coarsest.
 std::vector<double> bin_widths(const Grid& grid);
 
-// The continuum reference solution of the scene (core/reference) read by the scene's
+// The continuum reference solution of the setup (core/reference) read by the setup's
 // instrument for `test` at `times`, for a sample whose mass is spread over the grid's bins
 // as `x` says. Each bin is `subclasses` size classes evenly spaced in log d across it (the
 // curve linear in log d inside a bin, as a "table" grading is); the finest bin spans a
 // decade below d_0 and the coarsest from d_{n-1} to 4 d_{n-1}. Drag law, hindrance, bed,
 // cylinder, fluid, particle density, sample mass, layers and the instruments' geometry are
-// the scene's.
+// the setup's.
 //
 // Readings are in the laboratory's units (reading_unit): the 152H's R minus its reading in
-// the scene's clear liquid (what a laboratory's composite correction removes), the
+// the setup's clear liquid (what a laboratory's composite correction removes), the
 // sphere's apparent mass, the pipette's dry mass. The sphere's and the pipette's are affine
 // in x (while the bed stays below them); the hydrometer's is nearly so, through the bulb's
 // equilibrium depth.
 class ForwardModel {
  public:
-  ForwardModel(const Scene& scene, Test test, Grid grid, std::vector<double> times,
+  ForwardModel(const TestSetup& setup, Test test, Grid grid, std::vector<double> times,
                int subclasses = 8);
 
   Test test() const { return test_; }
@@ -90,7 +90,7 @@ class ForwardModel {
   // in suspension (100 % finer, time zero).
   double empty_reading() const;
   double full_reading() const;
-  // The 152H's own reading R in the scene's clear liquid, g/L (readings are R less this).
+  // The 152H's own reading R in the setup's clear liquid, g/L (readings are R less this).
   double clear_liquid_reading() const { return clear_reading_; }
 
   // Where the test reads (m below the surface): the sphere's and the pipette's centre, the
@@ -101,7 +101,7 @@ class ForwardModel {
   double reading_depth(double value) const;
   // Stokes' diameter (Eq. 16) at reading_depth(value) and `time`, m.
   double stokes_diameter(double time, double value) const;
-  // How fast the front of a size falls from the surface in the model: the scene's drag law
+  // How fast the front of a size falls from the surface in the model: the setup's drag law
   // in the initial suspension's voidage (local_voidage: exactly the coarsest front's speed,
   // and within the few per cent of hindrance of every other's), slowed by Richardson-Zaki,
   // or in clear fluid, as instruments.reference.settling says.
@@ -116,7 +116,7 @@ class ForwardModel {
   double read(const Eigen::VectorXd& x, double time) const;
   double read_fields(const LayerFields& fields) const;
 
-  Scene scene_;
+  TestSetup setup_;
   Test test_;
   Grid grid_;
   std::vector<double> times_;

@@ -234,7 +234,7 @@ InvalidInversionInput::InvalidInversionInput(std::size_t row, const std::string&
                                              double value, const std::string& why)
     : std::invalid_argument(describe(row, field, value, why)), row_(row) {}
 
-void validate_measurements(const Scene& scene, Test test, const std::vector<Measurement>& data,
+void validate_measurements(const TestSetup& setup, Test test, const std::vector<Measurement>& data,
                            const InversionOptions& options) {
   constexpr auto kNoRow = InvalidInversionInput::kNoRow;
   const std::string unit = reading_unit(test);
@@ -251,7 +251,7 @@ void validate_measurements(const Scene& scene, Test test, const std::vector<Meas
                                 "must be positive (" + unit + ")");
   if (!(options.coverage > 0 && options.coverage < 1))
     throw InvalidInversionInput(kNoRow, "coverage", options.coverage, "allowed (0, 1)");
-  const ForwardModel model(scene, test, log_grid(1e-6, 1e-4, 2), {});
+  const ForwardModel model(setup, test, log_grid(1e-6, 1e-4, 2), {});
   const double empty = model.empty_reading(), full = model.full_reading();
   // Between -10 % and 110 % finer, as a reading.
   const double lo = std::min(empty - 0.1 * (full - empty), empty + 1.1 * (full - empty));
@@ -309,9 +309,10 @@ Fit fit_readings(ForwardModel& model, const Eigen::VectorXd& measured, double si
 
 }  // namespace
 
-InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<Measurement>& data,
+InvertedCurve invert_readings(const TestSetup& setup, Test test,
+                              const std::vector<Measurement>& data,
                               const InversionOptions& options) {
-  validate_measurements(scene, test, data, options);
+  validate_measurements(setup, test, data, options);
   InvertedCurve out;
   const double resolution = options.resolution > 0 ? options.resolution : default_resolution(test);
   out.sigma = resolution / std::sqrt(12.0);
@@ -325,13 +326,13 @@ InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<M
   }
   // The grid: a node at each reading's pinned diameter, refined between them.
   {
-    const ForwardModel probe(scene, test, log_grid(1e-6, 1e-4, 2), times);
+    const ForwardModel probe(setup, test, log_grid(1e-6, 1e-4, 2), times);
     for (const auto& m : data)
       out.reading_diameter.push_back(probe.model_diameter(m.time, m.value));
     out.resolved_max = *std::max_element(out.reading_diameter.begin(), out.reading_diameter.end());
     out.resolved_min = *std::min_element(out.reading_diameter.begin(), out.reading_diameter.end());
   }
-  ForwardModel model(scene, test, reading_grid(out.reading_diameter, options.refine), times,
+  ForwardModel model(setup, test, reading_grid(out.reading_diameter, options.refine), times,
                      options.subclasses);
   const std::vector<double> widths = bin_widths(model.grid());
   Fit fit = fit_readings(model, measured, out.sigma, options);
@@ -361,7 +362,7 @@ InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<M
     constexpr int kBoundSplit = 4;
     const Grid fine = split_grid(model.grid(), kBoundSplit);
     const Eigen::VectorXd x_fine = split_shares(x, kBoundSplit);
-    ForwardModel fine_model(scene, test, fine, times,
+    ForwardModel fine_model(setup, test, fine, times,
                             std::max(1, options.subclasses / kBoundSplit));
     fine_model.hold_speeds_at(x_fine);
     const Eigen::MatrixXd j_fine = fine_model.jacobian(x_fine);

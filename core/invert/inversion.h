@@ -97,7 +97,7 @@ class InvalidInversionInput : public std::invalid_argument {
 // kMinReadings, values between -10 % and 110 % finer as readings (the 152H's raw reading is
 // checked on its -5..60 scale by validate_lab_readings), refine within [0, kMaxRefine]. Throws
 // InvalidInversionInput.
-void validate_measurements(const Scene& scene, Test test, const std::vector<Measurement>& data,
+void validate_measurements(const TestSetup& setup, Test test, const std::vector<Measurement>& data,
                            const InversionOptions& options);
 
 // The grading curve whose forward-modelled readings match `data`: non-negative least
@@ -105,7 +105,8 @@ void validate_measurements(const Scene& scene, Test test, const std::vector<Meas
 // bins' mass per log d (zero for a curve linear in log d), with the shares summing to 1;
 // lambda by the discrepancy principle; Gauss-Newton for the hydrometer; the band by a
 // parametric bootstrap of the reading noise. docs/invert.md has the details.
-InvertedCurve invert_readings(const Scene& scene, Test test, const std::vector<Measurement>& data,
+InvertedCurve invert_readings(const TestSetup& setup, Test test,
+                              const std::vector<Measurement>& data,
                               const InversionOptions& options = {});
 
 }  // namespace sedem::invert

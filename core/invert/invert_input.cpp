@@ -26,11 +26,11 @@ std::vector<Measurement> read_measurements_csv(std::istream& in, Test test) {
   return out;
 }
 
-std::vector<GradingPoint> standard_reduction(const Scene& scene, Test test,
+std::vector<GradingPoint> standard_reduction(const TestSetup& setup, Test test,
                                              const std::vector<Measurement>& data) {
   if (test == Test::hydrometer)
     throw std::invalid_argument("standard_reduction: the 152H's is ASTM D422 (core/lab)");
-  const ForwardModel model(scene, test, log_grid(1e-6, 1e-4, 2), {});
+  const ForwardModel model(setup, test, log_grid(1e-6, 1e-4, 2), {});
   const Suspension& s = model.suspension();
   const double empty = model.empty_reading(), full = model.full_reading();
   std::vector<GradingPoint> out;
@@ -45,12 +45,12 @@ std::vector<GradingPoint> standard_reduction(const Scene& scene, Test test,
   return out;
 }
 
-RecordedTest record_simulated(const Scene& scene, Test test, const std::vector<double>& times,
+RecordedTest record_simulated(const TestSetup& setup, Test test, const std::vector<double>& times,
                               const std::vector<double>& raw, double resolution) {
   if (times.size() != raw.size())
     throw std::invalid_argument("record_simulated: as many times as readings");
   const double step = resolution > 0 ? resolution : default_resolution(test);
-  const ForwardModel model(scene, test, log_grid(1e-6, 1e-4, 2), {});
+  const ForwardModel model(setup, test, log_grid(1e-6, 1e-4, 2), {});
   const double clear = test == Test::hydrometer ? model.clear_liquid_reading() : 0.0;
   RecordedTest out;
   std::vector<LabReading> lab;
@@ -60,14 +60,13 @@ RecordedTest record_simulated(const Scene& scene, Test test, const std::vector<d
     lab.push_back({times[i], r, 20.0, clear});
   }
   if (test == Test::hydrometer) {
-    const double volume_l = std::numbers::pi / 4.0 * scene.cylinder.diameter *
-                            scene.cylinder.diameter * scene.cylinder.height * 1e3;
-    const LabSpecimen specimen{scene.sample.particle_density / 1000.0,
-                               scene.sample.total_mass / volume_l};
+    const double volume_l = std::numbers::pi / 4.0 * setup.cylinder.diameter *
+                            setup.cylinder.diameter * setup.cylinder.height * 1e3;
+    const LabSpecimen specimen{setup.particle_density / 1000.0, setup.total_mass / volume_l};
     for (const auto& p : reduce_astm_d422(lab, specimen))
       out.standard.push_back({p.diameter, p.percent_finer});
   } else {
-    out.standard = standard_reduction(scene, test, out.data);
+    out.standard = standard_reduction(setup, test, out.data);
   }
   return out;
 }

@@ -29,21 +29,21 @@ std::vector<Measurement> read_measurements_csv(std::istream& in, Test test);
 // The standard reduction of the sphere's or the pipette's readings, as a DEM run reduces
 // them: Stokes' diameter at the instrument's depth (Eq. 16), Eq. 22 (sphere) or Eq. 17
 // (pipette) for the percent finer.
-std::vector<GradingPoint> standard_reduction(const Scene& scene, Test test,
+std::vector<GradingPoint> standard_reduction(const TestSetup& setup, Test test,
                                              const std::vector<Measurement>& data);
 
 // A simulated test's readings as a laboratory records them: the instrument's own values
 // (152H R in g/L, the sphere's apparent mass and the pipette's dry mass in g) rounded to
-// `resolution` (0: the test's default), the 152H's less its reading in the scene's clear
+// `resolution` (0: the test's default), the 152H's less its reading in the setup's clear
 // liquid (what a composite correction removes, taken as exact); and their standard
 // reduction: ASTM D422 for the 152H (its effective depth; the specimen's mass per litre of
-// the scene's cylinder, as D422 assumes 1000 mL; 20 C), standard_reduction for the others.
+// the setup's cylinder, as D422 assumes 1000 mL; 20 C), standard_reduction for the others.
 // The standard reduction is reading_format(test).standard_name.
 struct RecordedTest {
   std::vector<Measurement> data;
   std::vector<GradingPoint> standard;
 };
-RecordedTest record_simulated(const Scene& scene, Test test, const std::vector<double>& times,
+RecordedTest record_simulated(const TestSetup& setup, Test test, const std::vector<double>& times,
                               const std::vector<double>& raw, double resolution = 0);
 
 }  // namespace sedem::invert

@@ -12,16 +12,16 @@ std::vector<TestReadings> TestResults::dem() const {
   return out;
 }
 
-InstrumentObserver::InstrumentObserver(const Scene& scene, const Sample& sample)
-    : scene_(scene),
+InstrumentObserver::InstrumentObserver(const TestSetup& setup, const Sample& sample)
+    : setup_(setup),
       classes_(sample.classes),
       particle_density_(sample.particle_density),
-      panel_(scene, sample),
+      panel_(setup, sample),
       reading_times_(panel_.reading_times()),
-      profile_times_(scene.instruments.profile_times),
+      profile_times_(setup.instruments.profile_times),
       times_(merge_times({reading_times_, profile_times_})),
-      reference_(reference_readings(scene, sample)) {
-  std::erase_if(times_, [&](double t) { return t > scene.end_time * (1 + 1e-12); });
+      reference_(reference_readings(setup, sample)) {
+  std::erase_if(times_, [&](double t) { return t > setup.end_time * (1 + 1e-12); });
 }
 
 void InstrumentObserver::observe(const Snapshot& snapshot) {
@@ -31,9 +31,9 @@ void InstrumentObserver::observe(const Snapshot& snapshot) {
 void InstrumentObserver::observe_in_place(double time, const Particles& particles) {
   if (contains_time(reading_times_, time)) panel_.observe(time, particles);
   if (contains_time(profile_times_, time))
-    profiles_.push_back(largest_diameter_profile(particles, scene_.cylinder, scene_.fluid,
+    profiles_.push_back(largest_diameter_profile(particles, setup_.cylinder, setup_.fluid,
                                                  particle_density_,
-                                                 std::size_t(scene_.instruments.layers), time));
+                                                 std::size_t(setup_.instruments.layers), time));
 }
 
 TestResults InstrumentObserver::results() const {

@@ -5,8 +5,8 @@
 #include "core/fields/layer_fields.h"
 #include "core/instruments/granulometry.h"
 #include "core/instruments/instrument_panel.h"
+#include "core/instruments/test_setup.h"
 #include "core/observe/observer.h"
-#include "core/scene/scene.h"
 
 namespace sedem {
 
@@ -20,10 +20,10 @@ struct TestResults {
 
 // The enabled tests read from the particles at their times, plus the Fig. 12 profiles at
 // instruments.profile_times_min. The reference solution is computed in closed form for the
-// same scene, so the run's error and bias come out when the last reading is in.
+// same setup, so the run's error and bias come out when the last reading is in.
 class InstrumentObserver : public Observer {
  public:
-  InstrumentObserver(const Scene& scene, const Sample& sample);
+  InstrumentObserver(const TestSetup& setup, const Sample& sample);
   std::string name() const override { return "instruments"; }
   std::vector<double> wanted_times() const override { return times_; }
   void observe(const Snapshot& snapshot) override;
@@ -36,7 +36,7 @@ class InstrumentObserver : public Observer {
   const Suspension& suspension() const { return panel_.suspension(); }
 
  private:
-  Scene scene_;
+  TestSetup setup_;
   std::vector<SizeClass> classes_;
   double particle_density_;
   InstrumentPanel panel_;

@@ -7,7 +7,6 @@
 
 #include "core/physics/drag.h"
 #include "core/physics/stokes.h"
-#include "core/scene/scene.h"
 
 namespace sedem {
 namespace {
@@ -270,16 +269,16 @@ LayerFields ReferenceSolution::layer_fields(double time, std::size_t layers,
   return LayerFields(layer_solid_volume(time, layers), cylinder_, fluid, particle_density_);
 }
 
-ReferenceSolution make_reference(const Scene& scene, const Sample& sample,
+ReferenceSolution make_reference(const TestSetup& setup, const Sample& sample,
                                  const ReferenceOptions& options) {
-  const double c0 = sample.section_mass / scene.cylinder.section_volume();
-  auto classes = settling_classes(sample.classes, c0, sample.particle_density, scene.fluid,
-                                  scene.forces.drag, options);
+  const double c0 = sample.section_mass / setup.cylinder.section_volume();
+  auto classes = settling_classes(sample.classes, c0, sample.particle_density, setup.fluid,
+                                  setup.drag, options);
   if (options.settling == ReferenceSettling::local_voidage)
     return ReferenceSolution::from_fronts(
-        local_voidage_fronts(classes, sample.particle_density, scene.fluid, scene.forces.drag),
-        scene.cylinder, sample.particle_density, options.bed_packing);
-  return ReferenceSolution(classes, scene.cylinder, sample.particle_density, options.bed_packing);
+        local_voidage_fronts(classes, sample.particle_density, setup.fluid, setup.drag),
+        setup.cylinder, sample.particle_density, options.bed_packing);
+  return ReferenceSolution(classes, setup.cylinder, sample.particle_density, options.bed_packing);
 }
 
 }  // namespace sedem

@@ -6,16 +6,15 @@
 #include <vector>
 
 #include "core/fields/layer_fields.h"
+#include "core/instruments/test_setup.h"
 #include "core/model/sample.h"
 
 namespace sedem {
 
-struct Scene;
-
 // How the continuum reference settles each size class:
 //  - free: at its terminal velocity in clear fluid;
 //  - richardson_zaki: slowed by (1 - phi_0)^n, phi_0 the initial solid fraction, everywhere;
-//  - local_voidage: at the terminal velocity the scene's drag law gives at the voidage of the
+//  - local_voidage: at the terminal velocity the setup's drag law gives at the voidage of the
 //    suspension around it, which changes as the coarser sizes leave (see voidage_fronts).
 enum class ReferenceSettling { free, richardson_zaki, local_voidage };
 
@@ -35,7 +34,7 @@ struct SettlingClass {
   double velocity = 0;       // m/s, downwards
 };
 
-// The terminal velocity the engine uses for the scene's forces.drag: "stokes" -> Eq. 13,
+// The terminal velocity the engine uses for the drag law `drag` (forces.drag): "stokes" -> Eq. 13,
 // "di_felice" -> Di Felice at voidage 1. Throws for "off" (no terminal velocity).
 double reference_terminal_velocity(const std::string& drag, double diameter,
                                    double particle_density, const Fluid& fluid);
@@ -83,7 +82,7 @@ std::vector<SettlingFront> voidage_fronts(
 std::vector<SettlingFront> fronts_with_held_speeds(const std::vector<SettlingClass>& classes,
                                                    const HeldFronts& held);
 
-// voidage_fronts for the scene's drag law: Di Felice's terminal velocity at voidage eps is
+// voidage_fronts for the setup's drag law: Di Felice's terminal velocity at voidage eps is
 // u_n(1) eps^(a_n), a_n fitted exactly at the initial voidage (chi hardly changes over the few
 // per cent of solids); Stokes drag does not see the voidage, so its fronts are the classes'.
 std::vector<SettlingFront> local_voidage_fronts(const std::vector<SettlingClass>& classes,
@@ -125,8 +124,8 @@ class ReferenceSolution {
   double bed_packing_;
 };
 
-// The reference for a scene and its sample.
-ReferenceSolution make_reference(const Scene& scene, const Sample& sample,
+// The reference for a setup and its sample.
+ReferenceSolution make_reference(const TestSetup& setup, const Sample& sample,
                                  const ReferenceOptions& options);
 
 }  // namespace sedem

@@ -89,7 +89,7 @@ SimulationRun simulate(const Scene& scene, Sample sample, bool keep_last) {
   SimulationRun run;
   run.particles = sample.particles.size();
   Simulation simulation(scene, std::move(sample));
-  InstrumentObserver instruments(scene, simulation.sample());
+  InstrumentObserver instruments(test_setup(scene), simulation.sample());
   simulation.watch(instruments);
   simulation.run_here();
   const Engine& engine = simulation.engine();

@@ -18,4 +18,16 @@ SampleSetup sample_setup(const Scene& scene) {
   return SampleSetup{scene.sample, scene.cylinder};
 }
 
+TestSetup test_setup(const Scene& scene) {
+  TestSetup s;
+  s.fluid = scene.fluid;
+  s.cylinder = scene.cylinder;
+  s.instruments = scene.instruments;
+  s.drag = scene.forces.drag;
+  s.particle_density = scene.sample.particle_density;
+  s.total_mass = scene.sample.total_mass;
+  s.end_time = scene.end_time;
+  return s;
+}
+
 }  // namespace sedem

@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "core/design/schedule_design.h"
+#include "core/run/stage_setups.h"
 #include "core/scene/scene.h"
 
 namespace sedem {
@@ -29,7 +30,7 @@ Reading at(double diameter_um, double percent) {
 }
 
 TEST(ScheduleScore, ExactReadingsAtTheTablePointsHaveNoError) {
-  const TruthGrid grid = truth_grid(knee_scene(), 10e-6, 80e-6);
+  const TruthGrid grid = truth_grid(knee_scene().sample.grading, 10e-6, 80e-6);
   const auto score = score_readings({at(10, 0), at(20, 10), at(40, 90), at(80, 100)}, grid);
   EXPECT_LT(score.worst_error, 1e-9);
   EXPECT_LT(score.mean_error, 1e-9);
@@ -38,7 +39,7 @@ TEST(ScheduleScore, ExactReadingsAtTheTablePointsHaveNoError) {
 TEST(ScheduleScore, TwoReadingsMissTheKneeByHandComputedAmount) {
   // The straight line from (10, 0) to (80, 100) in log d is 100/3 % at 20 um and 200/3 % at
   // 40 um: 23.33 pp from the truth at both, the worst of the range (first found: 20 um).
-  const TruthGrid grid = truth_grid(knee_scene(), 10e-6, 80e-6);
+  const TruthGrid grid = truth_grid(knee_scene().sample.grading, 10e-6, 80e-6);
   const auto score = score_readings({at(10, 0), at(80, 100)}, grid);
   EXPECT_NEAR(score.worst_error, 100.0 / 3 - 10, 1e-9);
   EXPECT_NEAR(score.worst_diameter, 20e-6, 1e-12);
@@ -51,7 +52,7 @@ TEST(ScheduleScore, TwoReadingsMissTheKneeByHandComputedAmount) {
 
 TEST(ScheduleScore, AReadingsOwnErrorCounts) {
   // A reading 5 pp off the truth at 40 um, the others exact: the worst is that reading.
-  const TruthGrid grid = truth_grid(knee_scene(), 10e-6, 80e-6);
+  const TruthGrid grid = truth_grid(knee_scene().sample.grading, 10e-6, 80e-6);
   const auto score = score_readings({at(10, 0), at(20, 10), at(40, 85), at(80, 100)}, grid);
   EXPECT_NEAR(score.worst_error, 5, 1e-9);
   EXPECT_NEAR(score.worst_diameter, 40e-6, 1e-12);
@@ -93,14 +94,14 @@ TEST(DesignSchedule, TheSearchFindsTheBestOfEverySchedule) {
   options.test = "hydrometer";
   options.size_count = 300;
   options.last_time = 600;
-  const ScheduleDesign design = design_schedule(scene, options);
+  const ScheduleDesign design = design_schedule(test_setup(scene), sample_setup(scene), options);
   ASSERT_EQ(design.designed.times.size(), 3u);
   EXPECT_GE(design.designed.times.front(), 120);
   EXPECT_LE(design.designed.times.back(), 600);
   EXPECT_LE(design.designed_score.worst_error, design.standard_score.worst_error + 1e-9);
 
   // Brute force over every three candidate times that span the standard's diameters.
-  const ScheduleReader reader(scene, options.size_count);
+  const ScheduleReader reader(test_setup(scene), sample_setup(scene), options.size_count);
   ReadingSchedule all;
   all.times = clock_times(120, 600);
   all.depth_fraction = std::nan("");
@@ -125,7 +126,8 @@ TEST(DesignSchedule, TheFloorReadsEveryMinuteOverTheStandardsTimes) {
   DesignOptions options;
   options.test = "hydrometer";
   options.size_count = 300;
-  const ScheduleDesign design = design_schedule(short_test(), options);
+  const ScheduleDesign design =
+      design_schedule(test_setup(short_test()), sample_setup(short_test()), options);
   EXPECT_EQ(design.floor.times, (std::vector<double>{120, 180, 240, 300, 360, 420, 480, 540, 600}));
   // The standard's readings are among the floor's: its score cannot be better at them.
   EXPECT_GE(design.standard_score.worst_error, design.floor_score.worst_error - 1e-9);
@@ -135,7 +137,7 @@ TEST(DesignSchedule, BadOptionsNameTheValueAndWhatIsAllowed) {
   Scene scene = short_test();
   auto message = [&](DesignOptions o) {
     try {
-      check_design_options(scene, o);
+      check_design_options(test_setup(scene), o);
     } catch (const std::invalid_argument& e) {
       return std::string(e.what());
     }

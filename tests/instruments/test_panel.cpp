@@ -24,7 +24,7 @@ TEST(InstrumentPanel, UniformStartReadsTheWholeSample) {
   scene.instruments.buoyancy_times = {60.0};
   scene.instruments.pipette_times = {30.0, 60.0};
   const Sample sample = build_sample(sample_setup(scene));
-  InstrumentPanel panel(scene, sample);
+  InstrumentPanel panel(test_setup(scene), sample);
   EXPECT_EQ(panel.reading_times(), (std::vector<double>{30.0, 60.0}));
   // c_0 = (60 g / 180) / (B H h_z) = 41.457 kg/m^3.
   EXPECT_NEAR(panel.suspension().initial_concentration, 41.456985, 1e-5);
@@ -58,7 +58,7 @@ TEST(InstrumentPanel, KinematicSettlingMatchesTheReference) {
   scene.instruments.buoyancy_times = {60, 240, 900};
   scene.instruments.pipette_times = {60, 240, 900};
   const Sample sample = build_sample(sample_setup(scene));
-  InstrumentPanel panel(scene, sample);
+  InstrumentPanel panel(test_setup(scene), sample);
   for (double t : panel.reading_times()) {
     Particles p = sample.particles;
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -69,7 +69,7 @@ TEST(InstrumentPanel, KinematicSettlingMatchesTheReference) {
     panel.observe(t, p);
   }
   const auto dem = panel.readings();
-  const auto reference = reference_readings(scene, sample);
+  const auto reference = reference_readings(test_setup(scene), sample);
   const Granulometry g = compare(dem, reference, sample.classes);
   ASSERT_EQ(g.tests.size(), 3u);
   // Sampling noise only: the hydrometer's bulb holds ~6000 of the equal-mass particles

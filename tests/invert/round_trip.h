@@ -8,6 +8,7 @@
 #include "core/instruments/granulometry.h"
 #include "core/invert/inversion.h"
 #include "core/reference/reference_readings.h"
+#include "core/run/stage_setups.h"
 #include "core/sample/grading_curve.h"
 #include "core/sample/size_classes.h"
 #include "core/scene/scene.h"
@@ -57,8 +58,8 @@ inline SimulatedTest simulate_test(const Scene& scene, const Sample& sample, inv
   only.instruments.buoyancy = test == invert::Test::buoyancy;
   only.instruments.pipette = test == invert::Test::pipette;
   SimulatedTest out;
-  out.reference = reference_readings(only, sample).front();
-  const invert::ForwardModel model(only, test, invert::log_grid(1e-6, 1e-4, 2), {});
+  out.reference = reference_readings(test_setup(only), sample).front();
+  const invert::ForwardModel model(test_setup(only), test, invert::log_grid(1e-6, 1e-4, 2), {});
   for (const auto& r : out.reference.rows) {
     // readings_<test>.csv columns: reading_g_per_l; apparent_mass_kg; dry_mass_kg.
     const double raw = test == invert::Test::hydrometer ? r.extra[0]
@@ -78,7 +79,7 @@ inline SimulatedTest simulate_test(const Scene& scene, const Sample& sample, inv
 inline std::vector<invert::Measurement> recorded(const Scene& scene, const SimulatedTest& t,
                                                  invert::Test test,
                                                  const std::vector<double>& shift = {}) {
-  const invert::ForwardModel model(scene, test, invert::log_grid(1e-6, 1e-4, 2), {});
+  const invert::ForwardModel model(test_setup(scene), test, invert::log_grid(1e-6, 1e-4, 2), {});
   const double res = invert::default_resolution(test);
   const double offset = test == invert::Test::hydrometer ? model.clear_liquid_reading() : 0.0;
   std::vector<invert::Measurement> out;

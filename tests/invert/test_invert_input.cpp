@@ -25,7 +25,7 @@ std::vector<Measurement> pipette_readings() {
 std::string message_of(const std::vector<Measurement>& data, Test test,
                        const InversionOptions& o = {}) {
   try {
-    validate_measurements(Scene{}, test, data, o);
+    validate_measurements(TestSetup{}, test, data, o);
   } catch (const InvalidInversionInput& e) {
     return e.what();
   }
@@ -87,9 +87,9 @@ TEST(InvertInput, ReadsTheSphereAndPipetteColumns) {
 }
 
 TEST(InvertInput, StandardReductionIsZeroAndHundredAtTheEnds) {
-  const Scene scene;
-  const ForwardModel model(scene, invert::Test::buoyancy, log_grid(1e-6, 1e-4, 2), {});
-  const auto p = standard_reduction(scene, invert::Test::buoyancy,
+  const TestSetup setup;
+  const ForwardModel model(setup, invert::Test::buoyancy, log_grid(1e-6, 1e-4, 2), {});
+  const auto p = standard_reduction(setup, invert::Test::buoyancy,
                                     {{60, model.empty_reading()}, {120, model.full_reading()}});
   EXPECT_NEAR(p[0].percent_finer, 0.0, 1e-9);
   EXPECT_NEAR(p[1].percent_finer, 100.0, 1e-6);

@@ -45,7 +45,7 @@ InvertedCurve invert_simulated(const Scene& scene, invert::Test test) {
   const auto sim = test::simulate_test(scene, test::classes_only(scene), test);
   InversionOptions o;
   o.bootstrap = 0;
-  return invert_readings(scene, test, test::recorded(scene, sim, test), o);
+  return invert_readings(test_setup(scene), test, test::recorded(scene, sim, test), o);
 }
 
 // The fit meets the tolerance the bounds use, so it lies inside them. The sample's readings
@@ -92,7 +92,7 @@ TEST(ReadingBounds, OpenAtTheKneeNoReadingSees) {
     const auto sim = test::simulate_test(scene, sample, t);
     InversionOptions o;
     o.bootstrap = 0;
-    const auto c = invert_readings(scene, t, test::recorded(scene, sim, t), o);
+    const auto c = invert_readings(test_setup(scene), t, test::recorded(scene, sim, t), o);
     const auto widest = c.widest_open();
     double standard_error = 0, open_at_standard = 0;
     for (const auto& row : sim.reference.rows) {

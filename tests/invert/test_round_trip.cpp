@@ -31,7 +31,7 @@ RoundTrip round_trip(const Scene& scene, Test test, const InversionOptions& opti
   const Sample sample = classes_only(scene);
   const auto sim = simulate_test(scene, sample, test);
   RoundTrip r;
-  r.curve = invert_readings(scene, test, recorded(scene, sim, test), options);
+  r.curve = invert_readings(test_setup(scene), test, recorded(scene, sim, test), options);
   for (const auto& row : sim.reference.rows) {
     const double truth = true_percent_finer(sample.classes, row.diameter);
     r.inverted = std::max(r.inverted, std::abs(r.curve.at(row.diameter) - truth));
@@ -103,8 +103,8 @@ TEST(Pins, FollowTheHinderedFronts) {
   hindered.instruments.reference_settling = "local_voidage";
   Scene free = hindered;
   free.instruments.reference_settling = "free";
-  const ForwardModel a(hindered, invert::Test::buoyancy, log_grid(1e-6, 1e-4, 2), {});
-  const ForwardModel b(free, invert::Test::buoyancy, log_grid(1e-6, 1e-4, 2), {});
+  const ForwardModel a(test_setup(hindered), invert::Test::buoyancy, log_grid(1e-6, 1e-4, 2), {});
+  const ForwardModel b(test_setup(free), invert::Test::buoyancy, log_grid(1e-6, 1e-4, 2), {});
   for (double t : {30.0, 900.0}) {
     const double d = a.model_diameter(t, 0.0), d_free = b.model_diameter(t, 0.0);
     EXPECT_NEAR(a.front_speed(d) * t, a.nominal_depth(), 1e-9);
@@ -131,7 +131,8 @@ double coverage(const Scene& scene, invert::Test test, int copies, int replicas)
     std::vector<double> shift;
     for (std::size_t i = 0; i < sim.raw.size(); ++i) shift.push_back(noise(rng));
     o.seed = std::uint64_t(c + 1);
-    const auto curve = invert_readings(scene, test, recorded(scene, sim, test, shift), o);
+    const auto curve =
+        invert_readings(test_setup(scene), test, recorded(scene, sim, test, shift), o);
     for (double d : curve.reading_diameter) {
       const double truth = true_percent_finer(sample.classes, d);
       if (truth <= 0.5 || truth >= 99.5) continue;  // the ends say nothing about the band

@@ -137,7 +137,7 @@ TEST(Reference, SceneReadingsAndBias) {
   scene.sample.simulated_count = 2000;
   scene.instruments.layers = 4000;
   const Sample sample = build_sample(sample_setup(scene));
-  const auto readings = reference_readings(scene, sample);
+  const auto readings = reference_readings(test_setup(scene), sample);
   ASSERT_EQ(readings.size(), 3u);
   EXPECT_EQ(readings[0].test, "hydrometer");
   EXPECT_EQ(readings[0].rows.size(), scene.instruments.hydrometer_times.size());
@@ -170,10 +170,11 @@ TEST(Reference, DefaultSceneBiasAndInitialDensity) {
   Scene scene;
   scene.sample.simulated_count = 2000;
   const Sample sample = build_sample(sample_setup(scene));
-  const ReferenceSolution ref = make_reference(scene, sample, reference_options(scene));
+  const ReferenceSolution ref =
+      make_reference(test_setup(scene), sample, reference_options(test_setup(scene)));
   const LayerFields start = ref.layer_fields(0.0, 4000, scene.fluid);
   EXPECT_NEAR(start.density()[2000], 1000.0 + 0.6 * 41.456985, 1e-3);
-  for (const auto& test : reference_readings(scene, sample)) {
+  for (const auto& test : reference_readings(test_setup(scene), sample)) {
     const double bias = curve_bias(test, sample.classes);
     std::cout << test.test << " reference bias (Di Felice drag): " << bias
               << " percentage points\n";
@@ -274,8 +275,8 @@ TEST(LocalVoidage, FollowsTheScenesDragLaw) {
   free.settling = ReferenceSettling::free;
   ReferenceOptions local;
   local.settling = ReferenceSettling::local_voidage;
-  const auto hindered = make_reference(scene, sample, local).fronts();
-  const auto clear = make_reference(scene, sample, free).fronts();
+  const auto hindered = make_reference(test_setup(scene), sample, local).fronts();
+  const auto clear = make_reference(test_setup(scene), sample, free).fronts();
   ASSERT_EQ(hindered.size(), clear.size());
   const double eps0 = 1 - 41.456985 / 2500;
   const double coarsest = hindered.back().diameter;
@@ -285,8 +286,8 @@ TEST(LocalVoidage, FollowsTheScenesDragLaw) {
   for (std::size_t k = 0; k < hindered.size(); ++k) EXPECT_LT(hindered[k].speed, clear[k].speed);
 
   scene.forces.drag = "stokes";
-  const auto stokes_local = make_reference(scene, sample, local).fronts();
-  const auto stokes_free = make_reference(scene, sample, free).fronts();
+  const auto stokes_local = make_reference(test_setup(scene), sample, local).fronts();
+  const auto stokes_free = make_reference(test_setup(scene), sample, free).fronts();
   for (std::size_t k = 0; k < stokes_local.size(); ++k) {
     EXPECT_DOUBLE_EQ(stokes_local[k].speed, stokes_free[k].speed);
     EXPECT_DOUBLE_EQ(stokes_local[k].jump, stokes_free[k].jump);

@@ -63,7 +63,7 @@ TEST(Simulation, RunShowsEachObserverItsTimesInOrderAndGoesOnToTheEnd) {
 TEST(Simulation, EngineOnItsOwnThreadReadsWhatTheCallersThreadReads) {
   const Scene scene = small_scene();
   Simulation threaded(scene);
-  InstrumentObserver instruments(scene, threaded.sample());
+  InstrumentObserver instruments(test_setup(scene), threaded.sample());
   threaded.watch(instruments);
   ASSERT_TRUE(threaded.run().completed);
   const SimulationRun here = simulate(scene, build_sample(sample_setup(scene)));
@@ -113,7 +113,7 @@ TEST(Simulation, ResumedFromItsCheckpointReadsWhatAStraightRunReads) {
   };
   {
     Simulation first(scene);
-    InstrumentObserver instruments(scene, first.sample());
+    InstrumentObserver instruments(test_setup(scene), first.sample());
     Keeper keeper(instruments.wanted_times(), saved);
     first.watch(instruments);
     first.watch(keeper);
@@ -127,7 +127,7 @@ TEST(Simulation, ResumedFromItsCheckpointReadsWhatAStraightRunReads) {
   const double stopped_at = saved.back().time;
 
   Simulation resumed(scene);
-  InstrumentObserver instruments(scene, resumed.sample());
+  InstrumentObserver instruments(test_setup(scene), resumed.sample());
   resumed.watch(instruments);
   resumed.resume(checkpoint);
   EXPECT_GE(resumed.engine().time(), stopped_at);

@@ -1,4 +1,4 @@
-#include "core/design/schedule_confirmation.h"
+#include "core/run/schedule_confirmation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,6 @@
 #include "core/run/simulation.h"
 #include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
-#include "core/scene/scene.h"
 
 namespace sedem {
 
@@ -43,6 +42,14 @@ std::vector<Reading> at_times(const std::vector<Reading>& rows, const std::vecto
 }
 
 }  // namespace
+
+Scene scene_for_schedule(const Scene& scene, const std::string& test,
+                         const ReadingSchedule& schedule) {
+  Scene s = scene;
+  s.instruments = instruments_for_schedule(s.instruments, test, schedule);
+  s.end_time = schedule.times.back();
+  return s;
+}
 
 ScheduleConfirmation confirm_with_dem(const Scene& scene, const ScheduleDesign& design,
                                       std::int64_t particles, std::int64_t size_count) {

@@ -3,8 +3,16 @@
 #include <cstdint>
 
 #include "core/design/schedule_design.h"
+#include "core/scene/scene.h"
 
 namespace sedem {
+
+// Where a design meets the run: its schedules as scenes, and the DEM run that confirms it.
+
+// The scene with only `test` enabled, reading at `schedule`'s times and depth, and the run
+// ending at its last reading.
+Scene scene_for_schedule(const Scene& scene, const std::string& test,
+                         const ReadingSchedule& schedule);
 
 // A design's standard and designed schedules read from one DEM run of the scene (the same
 // particles, the same seed: both schedules see one realisation of the suspension), scored
