@@ -65,7 +65,7 @@ Scene scene_of_run(const fs::path& dir, std::string& scene_file) {
 // The observers that accumulate see the saved snapshots before the engine's time again, so
 // that a resumed run's readings are those of a run that never stopped.
 void replay(const Simulation& simulation, const fs::path& dir) {
-  const double until = simulation.engine().time();
+  const double until = simulation.time();
   if (!simulation.observers().needs_replay(until)) return;
   const std::size_t expected_particles = simulation.sample().particles.size();
   for (const auto& [time, file] : render::read_pvd(dir / "particles.pvd")) {
@@ -177,7 +177,6 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   // The engine gets the sample; the observers read it back from the simulation.
   const std::size_t particle_count = sample.particles.size(), size_count = sample.classes.size();
   Simulation simulation(scene, std::move(sample));
-  Engine& engine = simulation.engine();
   ObserverStart start;
   int status = exit_code::ok;
   auto finish_failed = [&](int code, const std::string& message) {
@@ -194,21 +193,21 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   if (resuming) {
     try {
       simulation.resume((out / kCheckpoint).string());
-      if (!(engine.time() == previous.time))
-        throw std::runtime_error("its time " + std::to_string(engine.time()) +
+      if (!(simulation.time() == previous.time))
+        throw std::runtime_error("its time " + std::to_string(simulation.time()) +
                                  " s differs from the record's " + std::to_string(previous.time) +
                                  " s");
     } catch (const std::exception& e) {
       std::cerr << "sedem: cannot resume from " << out / kCheckpoint << ": " << e.what() << '\n';
       return exit_code::invalid_scene;
     }
-    start.resume_from = engine.time();
+    start.resume_from = simulation.time();
   }
   if (!options.quiet)
     std::printf("sedem: %s: %zu particles in %zu sizes, %s %.0f s, output in %s\n",
                 scene.name.c_str(), particle_count, size_count,
-                resuming ? "resuming at" : "to simulate", resuming ? engine.time() : scene.end_time,
-                out.c_str());
+                resuming ? "resuming at" : "to simulate",
+                resuming ? simulation.time() : scene.end_time, out.c_str());
 
   RunObservers run_observers;
   try {
@@ -238,7 +237,7 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   auto checkpoint_record = [&] {
     CheckpointRecord c;
     c.identity = identity;
-    c.time = engine.time();
+    c.time = simulation.time();
     c.wall_time = wall_so_far();
     c.legs = record.legs;
     c.scene_file = record.scene_file;
@@ -280,7 +279,8 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   if (status == exit_code::interrupted) {
     try {
       write_checkpoint(
-          out, [&](const std::string& path) { engine.save_checkpoint(path); }, checkpoint_record());
+          out, [&](const std::string& path) { simulation.save_checkpoint(path); },
+          checkpoint_record());
     } catch (const std::exception& e) {
       fail(record, status, exit_code::io_failure,
            std::string("the checkpoint could not be written: ") + e.what());
@@ -305,12 +305,12 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   record.status = status == exit_code::ok            ? "complete"
                   : status == exit_code::interrupted ? "interrupted"
                                                      : "failed";
-  record.steps = engine.stats().steps;
-  record.simulated_time = engine.time();
+  record.steps = simulation.stats().steps;
+  record.simulated_time = simulation.time();
   // Every leg of a resumed run: its wall time and its particle-steps (the engine's counts go
   // on from the checkpoint).
   record.wall_time = wall_so_far();
-  record.particle_steps = engine.stats().particle_steps;
+  record.particle_steps = simulation.stats().particle_steps;
   record.files = run_files(out);
   try {
     write_run_record(record, scene, out / "run.json");
@@ -325,7 +325,7 @@ int run_in(const RunOptions& options, RunContext& ctx) {
                 << " hydrometer reading(s) lie off the 152H scale (-5 to 60 g/L) or with the "
                    "bulb out of the liquid; see on_scale in readings_hydrometer.csv\n";
   if (status == exit_code::interrupted)
-    std::cerr << "sedem: stopped at t = " << engine.time() << " s; what was computed is in "
+    std::cerr << "sedem: stopped at t = " << simulation.time() << " s; what was computed is in "
               << out.string() << "; go on with: sedem run --resume " << out.string() << '\n';
   else if (status != exit_code::ok)
     std::cerr << "sedem: " << record.message << '\n';

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/engine/engine.h"
 #include "core/engine/runner.h"
 #include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
@@ -11,19 +12,40 @@ namespace sedem {
 Simulation::Simulation(const Scene& scene) : Simulation(scene, build_sample(sample_setup(scene))) {}
 
 Simulation::Simulation(const Scene& scene, Sample sample)
-    : scene_(scene), engine_(engine_setup(scene), std::move(sample)) {}
+    : scene_(scene), engine_(std::make_unique<Engine>(engine_setup(scene), std::move(sample))) {}
+
+Simulation::~Simulation() = default;
+
+const Sample& Simulation::sample() const {
+  return engine_->sample();
+}
+double Simulation::time() const {
+  return engine_->time();
+}
+const EngineStats& Simulation::stats() const {
+  return engine_->stats();
+}
+const Particles& Simulation::particles() const {
+  return engine_->particles();
+}
+int Simulation::threads() const {
+  return engine_->threads();
+}
+void Simulation::save_checkpoint(const std::string& path) const {
+  engine_->save_checkpoint(path);
+}
 
 void Simulation::resume(const std::string& checkpoint) {
-  engine_.load_checkpoint(checkpoint);
+  engine_->load_checkpoint(checkpoint);
 }
 
 RunEnd Simulation::run(const RunControl& control) {
   using clock = std::chrono::steady_clock;
-  const double end = scene_.end_time, from = engine_.time();
+  const double end = scene_.end_time, from = engine_->time();
   std::vector<double> times = merge_times({observers_.times(), {end}});
   std::erase_if(times, [&](double t) { return t > end * (1 + 1e-12) || t < from; });
 
-  EngineRunner runner(engine_, std::move(times), control.capacity);
+  EngineRunner runner(*engine_, std::move(times), control.capacity);
   auto report = [&] {
     if (!control.progress) return;
     const auto p = runner.progress();
@@ -76,12 +98,12 @@ RunEnd Simulation::run(const RunControl& control) {
 
 void Simulation::run_here() {
   for (double t : observers_.times()) {
-    if (t < engine_.time()) continue;
-    engine_.advance_to(t);
-    observers_.show_in_place(engine_.time(), engine_.particles());
-    peak_engine_bytes_ = std::max(peak_engine_bytes_, engine_.bytes());
+    if (t < engine_->time()) continue;
+    engine_->advance_to(t);
+    observers_.show_in_place(engine_->time(), engine_->particles());
+    peak_engine_bytes_ = std::max(peak_engine_bytes_, engine_->bytes());
   }
-  peak_engine_bytes_ = std::max(peak_engine_bytes_, engine_.bytes());
+  peak_engine_bytes_ = std::max(peak_engine_bytes_, engine_->bytes());
 }
 
 SimulationRun simulate(const Scene& scene, Sample sample, bool keep_last) {
@@ -92,13 +114,12 @@ SimulationRun simulate(const Scene& scene, Sample sample, bool keep_last) {
   InstrumentObserver instruments(test_setup(scene), simulation.sample());
   simulation.watch(instruments);
   simulation.run_here();
-  const Engine& engine = simulation.engine();
   run.results = instruments.results();
-  run.stats = engine.stats();
-  if (keep_last) run.last = engine.particles();
-  run.simulated_seconds = engine.time();
+  run.stats = simulation.stats();
+  if (keep_last) run.last = simulation.particles();
+  run.simulated_seconds = simulation.time();
   run.peak_engine_bytes = simulation.peak_engine_bytes();
-  run.threads = engine.threads();
+  run.threads = simulation.threads();
   run.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;

@@ -12,12 +12,15 @@
 #include <string>
 #include <vector>
 
-#include "core/engine/engine.h"
+#include "core/model/engine_stats.h"
+#include "core/model/sample.h"
 #include "core/observe/instrument_observer.h"
 #include "core/observe/observer_set.h"
 #include "core/scene/scene.h"
 
 namespace sedem {
+
+class Engine;
 
 // How a run on the engine's own thread is steered from the calling thread.
 struct RunControl {
@@ -47,14 +50,21 @@ class Simulation {
   // The sample is the scene's (built from it, or given: a benchmark times its building).
   explicit Simulation(const Scene& scene);
   Simulation(const Scene& scene, Sample sample);
+  ~Simulation();
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 
   const Scene& scene() const { return scene_; }
   // The sample as built (its particles: where the engine has them). Only between runs.
-  const Sample& sample() const { return engine_.sample(); }
-  Engine& engine() { return engine_; }
-  const Engine& engine() const { return engine_; }
+  const Sample& sample() const;
+  // Where the engine is. Only between runs (the engine is then at rest).
+  double time() const;
+  const EngineStats& stats() const;
+  const Particles& particles() const;
+  int threads() const;  // the engine's
+  // The engine's whole state: a Simulation of the same scene and sample that resumes from it
+  // goes on bit for bit.
+  void save_checkpoint(const std::string& path) const;
 
   // An observer looks at the run from now on; the caller keeps it alive while it does.
   void watch(Observer& observer) { observers_.add(observer); }
@@ -75,7 +85,7 @@ class Simulation {
 
  private:
   Scene scene_;
-  Engine engine_;
+  std::unique_ptr<Engine> engine_;
   ObserverSet observers_;
   std::size_t peak_engine_bytes_ = 0;
 };

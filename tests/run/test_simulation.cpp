@@ -57,7 +57,7 @@ TEST(Simulation, RunShowsEachObserverItsTimesInOrderAndGoesOnToTheEnd) {
   EXPECT_EQ(early.seen, (std::vector<double>{10, 30}));
   EXPECT_EQ(late.seen, (std::vector<double>{20, 30}));
   EXPECT_EQ(early.counts.front(), simulation.sample().particles.size());
-  EXPECT_DOUBLE_EQ(simulation.engine().time(), 100.0);  // the scene's end, wanted or not
+  EXPECT_DOUBLE_EQ(simulation.time(), 100.0);  // the scene's end, wanted or not
 }
 
 TEST(Simulation, EngineOnItsOwnThreadReadsWhatTheCallersThreadReads) {
@@ -70,7 +70,7 @@ TEST(Simulation, EngineOnItsOwnThreadReadsWhatTheCallersThreadReads) {
   const auto a = dem_percent(instruments.results()), b = dem_percent(here.results);
   ASSERT_FALSE(a.empty());
   EXPECT_EQ(a, b);
-  EXPECT_EQ(threaded.engine().stats().steps, here.stats.steps);
+  EXPECT_EQ(threaded.stats().steps, here.stats.steps);
 }
 
 TEST(Simulation, StopsWhenAskedAndShowsWhatWasComputed) {
@@ -88,7 +88,7 @@ TEST(Simulation, StopsWhenAskedAndShowsWhatWasComputed) {
   EXPECT_FALSE(end.completed);
   EXPECT_TRUE(end.engine_error.empty());
   EXPECT_LE(log.seen.size(), 2u);
-  EXPECT_LT(simulation.engine().time(), 120.0);
+  EXPECT_LT(simulation.time(), 120.0);
   for (std::size_t k = 1; k < log.seen.size(); ++k) EXPECT_LT(log.seen[k - 1], log.seen[k]);
 }
 
@@ -122,7 +122,7 @@ TEST(Simulation, ResumedFromItsCheckpointReadsWhatAStraightRunReads) {
     control.poll = std::chrono::milliseconds(1);
     control.stop_requested = [&] { return !saved.empty() && saved.back().time >= 60; };
     ASSERT_FALSE(first.run(control).completed);
-    first.engine().save_checkpoint(checkpoint);
+    first.save_checkpoint(checkpoint);
   }
   const double stopped_at = saved.back().time;
 
@@ -130,10 +130,10 @@ TEST(Simulation, ResumedFromItsCheckpointReadsWhatAStraightRunReads) {
   InstrumentObserver instruments(test_setup(scene), resumed.sample());
   resumed.watch(instruments);
   resumed.resume(checkpoint);
-  EXPECT_GE(resumed.engine().time(), stopped_at);
-  ASSERT_TRUE(resumed.observers().needs_replay(resumed.engine().time()));
+  EXPECT_GE(resumed.time(), stopped_at);
+  ASSERT_TRUE(resumed.observers().needs_replay(resumed.time()));
   for (const Snapshot& s : saved)
-    if (s.time < resumed.engine().time()) resumed.observers().replay(s);
+    if (s.time < resumed.time()) resumed.observers().replay(s);
   ASSERT_TRUE(resumed.run().completed);
 
   const SimulationRun straight = simulate(scene, build_sample(sample_setup(scene)));
@@ -159,8 +159,8 @@ TEST(Simulation, PeriodicCheckpointsAreTakenWhileTheEngineRests) {
   // The last one written loads into an engine of the same scene.
   Simulation again(scene);
   again.resume((dir / "periodic.checkpoint").string());
-  EXPECT_GT(again.engine().time(), 0.0);
-  EXPECT_LE(again.engine().time(), 60.0);
+  EXPECT_GT(again.time(), 0.0);
+  EXPECT_LE(again.time(), 60.0);
 }
 
 }  // namespace

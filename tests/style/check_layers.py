@@ -3,7 +3,8 @@
 
 Each folder of core/ may include the folders listed for it and no other; in particular only
 core/scene (the scene's own loader, schema and checks) and core/run (where a Scene is taken
-apart into each stage's setup) may include the scene. A new arrow is a design decision: make
+apart into each stage's setup) may include the scene; app/ and render/ see the engine only
+through core/model and core/run. A new arrow is a design decision: make
 it here, in the open, not by an #include.
 """
 import pathlib
@@ -44,5 +45,14 @@ for folder in sorted(p for p in (root / "core").iterdir() if p.is_dir()):
             if m and m.group(1) != name and m.group(1) not in allowed[name]:
                 problems.append(f"{f.relative_to(root)}:{n}: core/{name} includes core/"
                                 f"{m.group(1)}, against the layer map")
+# Outside core, the engine is seen through its public face (core/model's Snapshot and
+# EngineStats, core/run's Simulation), never its internals.
+for top in ("app", "render"):
+    for f in sorted((root / top).rglob("*")):
+        if f.suffix in {".h", ".cpp"}:
+            for n, line in enumerate(f.read_text().splitlines(), 1):
+                if '#include "core/engine/' in line:
+                    problems.append(f"{f.relative_to(root)}:{n}: {top}/ includes the engine's "
+                                    "internals; use core/model or core/run")
 print("\n".join(problems))
 sys.exit(1 if problems else 0)
