@@ -9,8 +9,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/engine/checkpoint_io.h"
-#include "core/engine/simd_state.h"
+#include "core/engine/integrate/simd_state.h"
+#include "core/engine/state/checkpoint_io.h"
 #include "core/physics/stokes.h"
 
 namespace sedem {

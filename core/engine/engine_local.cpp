@@ -41,8 +41,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/engine/checkpoint_io.h"
 #include "core/engine/engine.h"
+#include "core/engine/state/checkpoint_io.h"
 #include "core/physics/stokes.h"
 
 namespace sedem {

@@ -6,7 +6,7 @@
 #include <random>
 #include <string>
 
-#include "core/engine/forces.h"
+#include "core/engine/forces/force_model.h"
 #include "core/run/stage_setups.h"
 #include "tests/engine/engine_test_support.h"
 

@@ -39,12 +39,12 @@
 #include <memory>
 #include <vector>
 
+#include "core/engine/contact/neighbour_grid.h"
 #include "core/engine/engine_config.h"
-#include "core/engine/engine_state.h"
-#include "core/engine/force_pass.h"
-#include "core/engine/forces.h"
-#include "core/engine/neighbour_grid.h"
-#include "core/engine/voidage_grid.h"
+#include "core/engine/forces/force_model.h"
+#include "core/engine/forces/force_pass.h"
+#include "core/engine/forces/voidage_grid.h"
+#include "core/engine/state/engine_state.h"
 
 namespace sedem {
 

@@ -1,4 +1,4 @@
-#include "core/engine/force_pass.h"
+#include "core/engine/forces/force_pass.h"
 
 #include <omp.h>
 

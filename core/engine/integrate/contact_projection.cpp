@@ -1,4 +1,4 @@
-#include "core/engine/contact_projection.h"
+#include "core/engine/integrate/contact_projection.h"
 
 #include <omp.h>
 

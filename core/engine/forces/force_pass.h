@@ -11,11 +11,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/engine/engine_state.h"
-#include "core/engine/forces.h"
+#include "core/engine/contact/neighbour_grid.h"
+#include "core/engine/forces/force_model.h"
 #include "core/engine/instability.h"
-#include "core/engine/neighbour_grid.h"
-#include "core/engine/pair_history.h"
+#include "core/engine/state/engine_state.h"
+#include "core/engine/state/pair_history.h"
 
 namespace sedem {
 

@@ -1,4 +1,4 @@
-#include "core/engine/integrators.h"
+#include "core/engine/integrate/integrators.h"
 
 #include <omp.h>
 
@@ -8,7 +8,7 @@
 #include <ostream>
 #include <vector>
 
-#include "core/engine/contact_projection.h"
+#include "core/engine/integrate/contact_projection.h"
 #include "core/physics/drag.h"
 #include "core/physics/stokes.h"
 
