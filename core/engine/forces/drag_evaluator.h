@@ -5,7 +5,8 @@
 
 namespace sedem {
 
-// The drag as a linear coefficient c (F = -c v), for the integrators.
+// The drag as a linear coefficient c (F = -c v), for the integrators (the laws: docs/physics.md,
+// "Drag (Eqs. 7-9)").
 struct DragEvaluator {
   const ForceModel* model = nullptr;
   const VoidageGrid* voidage = nullptr;
