@@ -27,7 +27,7 @@ struct ForceModel {
   double particle_density = 2500, fluid_density = 1000, viscosity = 1e-3, gravity = 9.81;
   double half_width = 0.03175;
   // Extra search distance, in radii, within which a pair counts as about to touch (the
-  // reference integrator shortens its step before contact rather than after).
+  // explicit integrator shortens its step before contact rather than after).
   double skin = 0;
 
   double volume(double d) const { return std::numbers::pi / 6.0 * d * d * d; }

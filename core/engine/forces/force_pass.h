@@ -20,7 +20,7 @@
 
 namespace sedem {
 
-// Whether a step needs the force pass: pair forces (the reference integrator) or lubrication.
+// Whether a step needs the force pass: pair forces (the explicit integrator) or lubrication.
 // Otherwise a free particle feels only weight, buoyancy and drag, which the integrator applies
 // itself, and the exponential integrator's projection finds the contacts in its own one pass
 // over the candidate lists.

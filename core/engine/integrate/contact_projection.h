@@ -21,15 +21,15 @@
 // constraints' moves in a fixed order: the result does not depend on the thread count. Pairs
 // pushed into contact from beyond the skin within one step are resolved at the next step.
 //
-// Friction (forces.friction > 0; walls stay frictionless, as in the reference integrator):
+// Friction (forces.friction > 0; walls stay frictionless, as in the explicit integrator):
 // each touching pair also gets a tangential force lambda_t, the compliant spring of Eq. 2,
 // lambda_t = -K_T g, with g the tangential displacement of a's contact point against b's
 // accumulated over the contact's life (the last step's -lambda_t / K_T plus this step's
 // relative motion, spins r w dt included), held by the Coulomb limit |lambda_t| <= mu lambda_n
 // of Eq. 4 (sliding when it binds). Its Jacobi update is the normal one's, along t, with the
 // rotations' mobility r^2 dt^2 / (2 I) added (I = m d^2 / 10; no drag on the spin, as in the
-// reference); the spins change by the torques r lambda_t. lambda_t does not depend on which
-// grain is a, and is kept across steps with lambda_n.
+// explicit integrator); the spins change by the torques r lambda_t. lambda_t does not depend on
+// which grain is a, and is kept across steps with lambda_n.
 
 #include <cmath>
 #include <cstddef>

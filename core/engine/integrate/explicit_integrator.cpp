@@ -17,15 +17,15 @@ using integration::check;
 using integration::integrate;
 using integration::ThreadSums;
 
-class ReferenceIntegrator final : public Integrator {
+class ExplicitIntegrator final : public Integrator {
  public:
-  ReferenceIntegrator(const IntegratorConfig& c, const IntegratorContext& x) : config_(c), ctx_(x) {
+  ExplicitIntegrator(const IntegratorConfig& c, const IntegratorContext& x) : config_(c), ctx_(x) {
     step_ = std::min(config_.max_step, config_.step_factor * ctx_.min_response_time);
     ceiling_ = config_.max_step;
     // c/m of the smallest grain in clear water: t_tr(95 %) = ln(20) m / c.
     clear_rate_ = ctx_.min_response_time > 0 ? std::log(20.0) / ctx_.min_response_time : 0;
   }
-  const char* name() const override { return "reference"; }
+  const char* name() const override { return "explicit"; }
 
   double next_step(const PassFacts& last) override {
     double dt = step_;
@@ -118,9 +118,9 @@ class ReferenceIntegrator final : public Integrator {
 
 }  // namespace
 
-std::unique_ptr<Integrator> make_reference_integrator(const IntegratorConfig& config,
-                                                      const IntegratorContext& context) {
-  return std::make_unique<ReferenceIntegrator>(config, context);
+std::unique_ptr<Integrator> make_explicit_integrator(const IntegratorConfig& config,
+                                                     const IntegratorContext& context) {
+  return std::make_unique<ExplicitIntegrator>(config, context);
 }
 
 }  // namespace sedem

@@ -4,7 +4,8 @@ namespace sedem {
 
 std::unique_ptr<Integrator> make_integrator(const IntegratorConfig& config,
                                             const IntegratorContext& context) {
-  if (config.method == "reference") return make_reference_integrator(config, context);
+  if (integrator_method(config) == IntegratorMethod::explicit_euler)
+    return make_explicit_integrator(config, context);
   return make_exponential_integrator(config, context);
 }
 

@@ -2,7 +2,7 @@
 
 // Integrators of Eq. 5, one class each; they read the force pass's sums and move the state.
 //
-// reference: explicit (symplectic Euler: v += dt a, then x += dt v), as close to the paper as an
+// explicit: symplectic Euler (v += dt a, then x += dt v), as close to the paper as an
 //   explicit scheme gets. Step rule (Sect. 4.6): dt = step_factor * min t_tr (t_tr: time to 95 %
 //   of the terminal velocity of the smallest grain; 0.1 in the paper). Once every free particle
 //   has reached its terminal velocity (velocity change per step below 1e-3 u_tr over a check
@@ -96,8 +96,8 @@ std::unique_ptr<Integrator> make_integrator(const IntegratorConfig& config,
                                             const IntegratorContext& context);
 // One per integrator (explicit_integrator.cpp, exponential_integrator.cpp); make_integrator
 // chooses.
-std::unique_ptr<Integrator> make_reference_integrator(const IntegratorConfig& config,
-                                                      const IntegratorContext& context);
+std::unique_ptr<Integrator> make_explicit_integrator(const IntegratorConfig& config,
+                                                     const IntegratorContext& context);
 std::unique_ptr<Integrator> make_exponential_integrator(const IntegratorConfig& config,
                                                         const IntegratorContext& context);
 

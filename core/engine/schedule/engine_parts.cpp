@@ -42,7 +42,9 @@ ForceModel force_model(const EngineSetup& setup, double particle_density) {
 // few steps (a dilute suspension has almost no candidates anyway, and a settled bed is mostly
 // frozen), 3 radii at least.
 double list_margin(const IntegratorConfig& c) {
-  return c.method == "reference" ? 3.0 : std::max(3.0, 4.0 * c.crossing_fraction);
+  return integrator_method(c) == IntegratorMethod::explicit_euler
+             ? 3.0
+             : std::max(3.0, 4.0 * c.crossing_fraction);
 }
 
 }  // namespace
@@ -57,10 +59,10 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
   model = force_model(setup, sample.particle_density);
   // Local time stepping is serial (its work is in syncs taken one at a time, in time order).
   // It needs no force pass, so not with lubrication.
-  local = setup.integrator.method == "exponential" && setup.integrator.local_steps &&
-          !model.lubrication;
+  local = integrator_method(setup.integrator) == IntegratorMethod::exponential &&
+          setup.integrator.local_steps && !model.lubrication;
   if (local) threads = 1;
-  if (setup.integrator.method == "reference")
+  if (integrator_method(setup.integrator) == IntegratorMethod::explicit_euler)
     model.skin = 0.25;
   else
     model.contact_forces = false;  // the exponential integrator projects contacts
