@@ -131,6 +131,11 @@ void EngineParts::rebuild_lists() {
   ++stats.list_builds;
 }
 
+void EngineParts::resort_and_rebuild_lists() {
+  if (resort.due(stats.steps)) resort.run(state, lists.search, grid, stats.steps);
+  rebuild_lists();
+}
+
 void EngineParts::throw_blowup(const Blowup& b, double at) const {
   throw InstabilityError(sample.particles.id[b.particle], at, b.quantity, b.value);
 }

@@ -34,6 +34,8 @@ struct EngineParts {
 
   // Rebuilds the candidate lists at the current positions and counts it.
   void rebuild_lists();
+  // The same, the state first re-sorted in grid order if the resort task is due.
+  void resort_and_rebuild_lists();
   // Throws InstabilityError for a blow-up the integrator or the force pass noted.
   [[noreturn]] void throw_blowup(const Blowup& b, double at) const;
 

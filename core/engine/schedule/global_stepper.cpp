@@ -24,11 +24,7 @@ void GlobalStepper::step(double limit) {
   if (e_.model.drag == DragLaw::di_felice)
     e_.voidage.compute(n, e_.state.x.data(), e_.state.y.data(), e_.state.diameter.data(),
                        e_.state.weight.data());
-  if (e_.lists.stale) {
-    if (e_.resort.due(e_.stats.steps))
-      e_.resort.run(e_.state, e_.lists.search, e_.grid, e_.stats.steps);
-    e_.rebuild_lists();
-  }
+  if (e_.lists.stale) e_.resort_and_rebuild_lists();
   if (e_.pass_needed) {
     e_.pass.run(e_.state, e_.grid, e_.lists, e_.springs, e_.next_springs, dt, e_.forces, e_.facts);
     if (e_.facts.blowup.found) e_.throw_blowup(e_.facts.blowup, e_.time);

@@ -157,9 +157,7 @@ void LocalStepper::step(double limit) {
 
   if (moving && target > e_.time) {
     if (e_.lists.stale) {
-      if (e_.resort.due(e_.stats.steps))
-        e_.resort.run(e_.state, e_.lists.search, e_.grid, e_.stats.steps);
-      e_.rebuild_lists();
+      e_.resort_and_rebuild_lists();
       index_members();
     }
     Blowup blowup;

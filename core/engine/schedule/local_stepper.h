@@ -33,8 +33,6 @@
 // there can rise back into an instrument's reach, so it leaves the dynamics and falls freely
 // onto a coarse bed (columns one largest grain wide, each raised by the area of the grains
 // that land in it at a packing of kBedPacking), where it is drawn without contacts.
-
-#include <algorithm>
 //
 // The stepper is split by job: local_stepper.cpp (start, the step, the voidage deposits),
 // local_coasting.cpp (windows and syncs), local_membership.cpp (engage, release, settle),
@@ -77,16 +75,22 @@ class LocalStepper {
   std::size_t bytes() const;
 
  private:
-  static constexpr double kSkin = 0.5;       // boxes are widened by (1 + kSkin) radii
-  static constexpr double kAllowance = 3.0;  // a member's box lets it travel this many radii
-  static constexpr double kReanchor = 1.0;   // and moves with it once it has travelled this many
-  static constexpr double kConverged =
-      1e-3;  // relative gap to the terminal velocity of a long window
-  static constexpr double kResponses = 8.0;          // response times of a window still converging
-  static constexpr double kTravel = 0.5;             // longest travel of a window, in mean spacings
-  static constexpr std::int64_t kReleaseEvery = 16;  // steps between releases of free members
-  static constexpr double kBedPacking =
-      0.8;  // area fraction of the coarse bed (discs packed at random)
+  // Boxes are widened by (1 + kSkin) radii.
+  static constexpr double kSkin = 0.5;
+  // A member's box lets it travel kAllowance radii, and moves with it once it has travelled
+  // kReanchor.
+  static constexpr double kAllowance = 3.0;
+  static constexpr double kReanchor = 1.0;
+  // Relative gap to the terminal velocity of a long window.
+  static constexpr double kConverged = 1e-3;
+  // Response times of a window still converging.
+  static constexpr double kResponses = 8.0;
+  // Longest travel of a window, in mean spacings.
+  static constexpr double kTravel = 0.5;
+  // Steps between two looks for members that touch nothing (to release them).
+  static constexpr std::int64_t kReleaseEvery = 16;
+  // Area fraction of the coarse bed (discs packed at random).
+  static constexpr double kBedPacking = 0.8;
   static constexpr std::uint32_t kNoMember = 0xFFFFFFFF;
   using Sync = std::pair<double, std::uint32_t>;
   static constexpr auto kLater = std::greater<Sync>{};
