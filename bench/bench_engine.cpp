@@ -11,7 +11,7 @@
 //  - stability: step multipliers, K_N 0.1x-100x, friction 0-1, size ratios up to 28 and a dense
 //    bed, each reporting the largest overlap, the energy growth, escaped particles and any
 //    instability the engine detected.
-//  - accuracy: the exponential integrator's error against the reference at growing steps.
+//  - accuracy: the exponential integrator's error against the explicit one at growing steps.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -281,20 +281,20 @@ int main(int argc, char** argv) {
            run(scene, bed(scene, 4 * small, 2.5e-6, 28, 6), horizon, 10));
   }
   {
-    // The reference integrator on the same dilute suspension, for comparison (short).
-    Scene scene = base_scene("reference", 1);
-    report("reference", 0.1, "dilute", 300,
+    // The explicit integrator on the same dilute suspension, for comparison (short).
+    Scene scene = base_scene("explicit", 1);
+    report("explicit", 0.1, "dilute", 300,
            run(scene, dilute(scene, 300, 2.5e-6, 70e-6, 7), 2e-3, 4));
   }
 
-  // Accuracy: dilute suspension, exponential against a fine reference.
+  // Accuracy: dilute suspension, exponential against the explicit integrator at a fine step.
   {
-    std::printf("\n%-12s %12s %10s %16s\n", "step_factor", "x reference", "steps",
+    std::printf("\n%-12s %12s %10s %16s\n", "step_factor", "x explicit", "steps",
                 "max error / fall");
     std::ofstream acsv(out + "/engine_accuracy.csv");
-    acsv << "fast_step_factor,step_multiple_of_reference,steps,max_position_error_over_fall\n";
+    acsv << "fast_step_factor,step_multiple_of_explicit,steps,max_position_error_over_fall\n";
     const double t = 0.01;
-    Scene rs = base_scene("reference");
+    Scene rs = base_scene("explicit");
     rs.integrator.adaptive = false;
     rs.integrator.step_factor = 0.01;
     Sample s0 = dilute(rs, 400, 5e-6, 70e-6, 8);
@@ -310,7 +310,8 @@ int main(int argc, char** argv) {
       for (std::size_t i = 0; i < s0.particles.size(); ++i)
         err = std::max(err, std::hypot(fast.particles().x[i] - ref.particles().x[i],
                                        fast.particles().y[i] - ref.particles().y[i]));
-      // The step actually taken (capped at r_min / u_max) over the reference's first step.
+      // The step actually taken (capped at r_min / u_max) over the explicit integrator's first
+      // step.
       const double first = 0.1 * stokes::response_time(5e-6, 2500, Fluid{}, 0.95);
       const double multiple = t / double(fast.stats().steps) / first;
       std::printf("%-12g %12.4g %10lld %16.3g\n", factor, multiple,

@@ -1,15 +1,15 @@
-// The fast integrator against the reference integrator, side by side in one run, on the same
+// The fast integrator against the explicit integrator, side by side in one run, on the same
 // sample: wall time, steps, each test's error against the continuum reference solution, and
-// how far the fast integrator's readings are from the reference integrator's (the error the
+// how far the fast integrator's readings are from the explicit integrator's (the error the
 // fast integration itself adds, free of the sampling noise both share).
 //
-// The reference integrator is explicit, with the paper's step rule: its step stays below the
+// The explicit integrator keeps the paper's step rule: its step stays below the
 // drag response time of the smallest grain (and below a contact's period while grains touch),
 // so it can only run short tests. The default case is the demo scene cut down to what it can
 // finish in a few minutes: 50 grains of 10 and 60 um for 60 s, contacts off (a grain on the
-// bottom would hold the reference at 1e-8 s steps) and Stokes drag (with so few heavily
-// weighted grains each one packs its own voidage cell to the floor, and the reference's step
-// shrinks with the drag it then feels).
+// bottom would hold the explicit integrator at 1e-8 s steps) and Stokes drag (with so few heavily
+// weighted grains each one packs its own voidage cell to the floor, and the explicit integrator's
+// step shrinks with the drag it then feels).
 //
 //   sedem_bench_speedup [--scene FILE] [--set key=value ...] [--max-step s1 s2 ...] [--out DIR]
 #include <CLI/CLI.hpp>
@@ -61,7 +61,7 @@ double position_gap(const Particles& a, const Particles& b, const Particles& sta
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App cli{"Fast against reference integrator, side by side"};
+  CLI::App cli{"Fast against explicit integrator, side by side"};
   std::string scene_file = std::string(SEDEM_SOURCE_DIR) + "/scenes/demo.toml";
   std::vector<std::string> sets{"sample.simulated_count=50", "run.end_time_s=60",
                                 "forces.contact=false", "forces.drag=stokes"};
@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
   const auto quiet = bench::no_output_keys();
   sets.insert(sets.begin(), quiet.begin(), quiet.end());
 
-  std::vector<Variant> variants{{"reference", {"integrator.method=reference"}}};
+  std::vector<Variant> variants{{"explicit", {"integrator.method=explicit"}}};
   for (double step : max_steps) {
     char name[64];
     std::snprintf(name, sizeof name, "exponential, step <= %g s", step);
@@ -90,23 +90,23 @@ int main(int argc, char** argv) {
   fs::create_directories(out);
   std::ofstream csv(fs::path(out) / "bench_speedup.csv");
   csv << "variant,particles,steps,wall_s,speedup,position_gap_over_fall,test,error_pp,"
-         "gap_to_reference_pp\n";
+         "gap_to_explicit_pp\n";
   std::printf("%-30s %9s %10s %9s %9s %10s  %-10s %9s %10s\n", "integrator", "particles", "steps",
               "wall_s", "speedup", "pos_gap", "test", "error_pp", "gap_pp");
-  SimulationRun reference;
+  SimulationRun slow;
   for (const auto& v : variants) {
     std::vector<std::string> overrides = sets;
     overrides.insert(overrides.end(), v.sets.begin(), v.sets.end());
     const Scene scene = load_scene(scene_file, overrides);
     const Sample sample = build_sample(sample_setup(scene));
     SimulationRun run = simulate(scene, sample, true);
-    if (v.name == "reference") reference = run;
-    const double speedup = reference.wall_seconds / std::max(run.wall_seconds, 1e-9);
-    const double moved = position_gap(run.last, reference.last, sample.particles);
+    if (v.name == "explicit") slow = run;
+    const double speedup = slow.wall_seconds / std::max(run.wall_seconds, 1e-9);
+    const double moved = position_gap(run.last, slow.last, sample.particles);
     for (const char* test : tests) {
       const double error = bench::test_error(run.results, test);
       if (std::isnan(error)) continue;
-      const double gap = readings_gap(run.results, reference.results, test);
+      const double gap = readings_gap(run.results, slow.results, test);
       std::printf("%-30s %9zu %10lld %9.3f %9.1f %10.2e  %-10s %9.3f %10.2e\n", v.name.c_str(),
                   run.particles, static_cast<long long>(run.stats.steps), run.wall_seconds, speedup,
                   moved, test, error, gap);

@@ -4,6 +4,16 @@
 
 namespace sedem {
 
+namespace {
+constexpr const char* kFormerExplicitName = "reference";
+}  // namespace
+
+IntegratorMethod integrator_method(const IntegratorConfig& c) {
+  return c.method == "explicit" || c.method == kFormerExplicitName
+             ? IntegratorMethod::explicit_euler
+             : IntegratorMethod::exponential;
+}
+
 void describe(ForcesConfig& c, Schema& s) {
   s.flag("forces.weight", &c.weight, "Gravity on every particle.");
   s.flag("forces.buoyancy", &c.buoyancy, "Hydrostatic force of the fluid on every particle.");
@@ -38,13 +48,14 @@ void describe(ForcesConfig& c, Schema& s) {
 }
 
 void describe(IntegratorConfig& c, Schema& s) {
-  s.choice("integrator.method", &c.method, {"reference", "exponential"},
-           "reference: explicit, the paper's step rule; exponential: exact drag update, large "
-           "stable steps.");
+  s.choice("integrator.method", &c.method, {"explicit", "exponential"},
+           "explicit: symplectic Euler, the paper's step rule (its former name, reference, is "
+           "still read); exponential: exact drag update, large stable steps.");
+  s.alias("integrator.method", kFormerExplicitName, "explicit");
   s.number("integrator.step_factor", &c.step_factor, "", 1, 1e-6, 1e9,
            "Time step as a multiple of the smallest response time t_tr (paper: 0.1).");
   s.flag("integrator.adaptive", &c.adaptive,
-         "reference: grow the step once every particle is at terminal velocity (Sect. 4.6).");
+         "explicit: grow the step once every particle is at terminal velocity (Sect. 4.6).");
   s.number("integrator.fast_step_factor", &c.fast_step_factor, "", 1, 1e-6, 1e9,
            "exponential: upper bound on the step as a multiple of the smallest response time "
            "t_tr.");

@@ -27,9 +27,9 @@ struct ForcesConfig {
 
 // How Eq. 5 is advanced in time (Sect. 4.6).
 struct IntegratorConfig {
-  std::string method = "exponential";  // reference | exponential
-  double step_factor = 0.1;            // reference: dt = factor * min t_tr (paper: 0.1)
-  bool adaptive = true;                // reference: the growth rule of Sect. 4.6
+  std::string method = "exponential";  // explicit | exponential (see integrator_method)
+  double step_factor = 0.1;            // explicit: dt = factor * min t_tr (paper: 0.1)
+  bool adaptive = true;                // explicit: the growth rule of Sect. 4.6
   double fast_step_factor = 1e5;       // exponential: dt <= factor * min t_tr
   double crossing_fraction = 0.8;      // exponential: dt <= fraction * r / speed, every grain
   double max_step = 1.0;               // s, upper bound on any step
@@ -39,6 +39,12 @@ struct IntegratorConfig {
   bool retire_below = true;  // local steps: grains below every instrument land analytically
   std::int64_t threads = 0;  // 0: all cores
 };
+
+// The integrator integrator.method names. Scenes and run records written before the explicit
+// integrator was renamed say "reference" (the word now names only the continuum reference
+// solution): it is read as "explicit" (Schema::alias), and the value may still hold it.
+enum class IntegratorMethod { explicit_euler, exponential };
+IntegratorMethod integrator_method(const IntegratorConfig& config);
 
 void describe(ForcesConfig& config, Schema& schema);
 void describe(IntegratorConfig& config, Schema& schema);

@@ -15,38 +15,55 @@ Param& Schema::add(Param p) {
 
 Param& Schema::number(std::string key, double* target, std::string unit, double to_si, double min,
                       double max, std::string doc) {
-  return add(
-      Param{std::move(key), target, std::move(unit), to_si, min, max, false, {}, std::move(doc)});
+  return add(Param{
+      std::move(key), target, std::move(unit), to_si, min, max, false, {}, std::move(doc), {}});
 }
 
 Param& Schema::integer(std::string key, std::int64_t* target, std::int64_t min, std::int64_t max,
                        std::string doc) {
-  return add(
-      Param{std::move(key), target, "", 1, double(min), double(max), false, {}, std::move(doc)});
+  return add(Param{
+      std::move(key), target, "", 1, double(min), double(max), false, {}, std::move(doc), {}});
 }
 
 Param& Schema::flag(std::string key, bool* target, std::string doc) {
-  return add(Param{std::move(key), target, "", 1, 0, 1, false, {}, std::move(doc)});
+  return add(Param{std::move(key), target, "", 1, 0, 1, false, {}, std::move(doc), {}});
 }
 
 Param& Schema::choice(std::string key, std::string* target, std::vector<std::string> choices,
                       std::string doc) {
-  return add(Param{std::move(key), target, "", 1, 0, 0, false, std::move(choices), std::move(doc)});
+  return add(
+      Param{std::move(key), target, "", 1, 0, 0, false, std::move(choices), std::move(doc), {}});
 }
 
 Param& Schema::text(std::string key, std::string* target, std::string doc) {
-  return add(Param{std::move(key), target, "", 1, 0, 0, false, {}, std::move(doc)});
+  return add(Param{std::move(key), target, "", 1, 0, 0, false, {}, std::move(doc), {}});
 }
 
 Param& Schema::list(std::string key, std::vector<double>* target, std::string unit, double to_si,
                     double min, double max, std::string doc) {
-  return add(
-      Param{std::move(key), target, std::move(unit), to_si, min, max, false, {}, std::move(doc)});
+  return add(Param{
+      std::move(key), target, std::move(unit), to_si, min, max, false, {}, std::move(doc), {}});
 }
 
 void Schema::exclusive(std::string a, std::string b) {
   if (!find(a) || !find(b)) throw std::logic_error("exclusive keys must be declared first");
   exclusives_.emplace_back(std::move(a), std::move(b));
+}
+
+void Schema::alias(const std::string& key, std::string former, std::string current) {
+  auto it =
+      std::find_if(params_.begin(), params_.end(), [&](const Param& p) { return p.key == key; });
+  if (it == params_.end() ||
+      std::find(it->choices.begin(), it->choices.end(), current) == it->choices.end())
+    throw std::logic_error("an alias needs a declared choice: " + key + " = " + current);
+  it->choices.push_back(former);  // the loader accepts it as one of the choices
+  it->aliases.emplace_back(std::move(former), std::move(current));
+}
+
+const std::string& current_choice(const Param& p, const std::string& value) {
+  for (const auto& [former, current] : p.aliases)
+    if (value == former) return current;
+  return value;
 }
 
 const Param* Schema::find(const std::string& key) const {
@@ -99,7 +116,7 @@ std::string format_user_value(const Param& p) {
           for (std::size_t i = 0; i < v->size(); ++i) os << (i ? ", " : "") << (*v)[i] / p.to_si;
           os << ']';
         } else if constexpr (std::is_same_v<T, std::string>) {
-          os << '"' << *v << '"';
+          os << '"' << current_choice(p, *v) << '"';
         } else {
           os << *v;
         }
@@ -111,7 +128,14 @@ std::string format_user_value(const Param& p) {
 std::string range_text(const Param& p) {
   std::ostringstream os;
   if (!p.choices.empty()) {
-    for (std::size_t i = 0; i < p.choices.size(); ++i) os << (i ? ", " : "") << p.choices[i];
+    bool first = true;
+    for (const auto& c : p.choices) {
+      const bool former = std::any_of(p.aliases.begin(), p.aliases.end(),
+                                      [&](const auto& a) { return a.first == c; });
+      if (former) continue;  // still read, no longer offered
+      os << (first ? "" : ", ") << c;
+      first = false;
+    }
     return os.str();
   }
   const bool numeric = std::visit(

@@ -23,8 +23,11 @@ struct Param {
   double min = -std::numeric_limits<double>::infinity();  // in user units, inclusive
   double max = std::numeric_limits<double>::infinity();
   bool min_exclusive = false;
-  std::vector<std::string> choices;  // allowed strings; empty: any
+  std::vector<std::string> choices;  // allowed strings (former names included); empty: any
   std::string doc;
+  // Former names of choices, {former, current}: a scene or run record that says the former
+  // still loads, and is written and read as the current one (current_choice).
+  std::vector<std::pair<std::string, std::string>> aliases;
 };
 
 class Schema {
@@ -45,6 +48,8 @@ class Schema {
   // non-zero value, and the other is then 0 ("unused"). Giving one, in the file or in
   // `--set`, resets the other, so that an override can switch from one to the other.
   void exclusive(std::string a, std::string b);
+  // A choice renamed: `former`, its old name, is still accepted for key's `current` choice.
+  void alias(const std::string& key, std::string former, std::string current);
   const std::vector<std::pair<std::string, std::string>>& exclusives() const { return exclusives_; }
 
   const std::vector<Param>& params() const { return params_; }
@@ -57,6 +62,9 @@ class Schema {
   std::vector<Param> params_;
   std::vector<std::pair<std::string, std::string>> exclusives_;
 };
+
+// The choice a value names: the current name of a former one (Param::aliases), else the value.
+const std::string& current_choice(const Param& p, const std::string& value);
 
 // A value as the user sees it (user units), for printing and run.json.
 std::string format_user_value(const Param& p);

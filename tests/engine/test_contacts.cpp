@@ -6,7 +6,7 @@
 #include <random>
 #include <string>
 
-#include "core/engine/forces.h"
+#include "core/engine/forces/force_model.h"
 #include "core/run/stage_setups.h"
 #include "tests/engine/engine_test_support.h"
 
@@ -23,19 +23,19 @@ double net_weight(double d) {
 
 // At rest on the floor the spring carries the net weight: overlap = (m - m_f) g / K_N.
 TEST(EngineContact, GrainRestsOnTheBottom) {
-  for (const char* method : {"exponential", "reference"}) {
+  for (const char* method : {"exponential", "explicit"}) {
     Scene scene = scene_with("stokes", method);
     const double d = 50e-6;
     Engine engine(engine_setup(scene), sample_of({{0, 0.5 * d + 2e-6, d}}));
-    // ~30 drag response times after landing; the reference bounces (restitution 1) until
+    // ~30 drag response times after landing; the explicit integrator bounces (restitution 1) until
     // the drag has taken the energy.
-    engine.advance_to(std::string(method) == "reference" ? 0.012 : 0.2);
+    engine.advance_to(std::string(method) == "explicit" ? 0.012 : 0.2);
     const double overlap = 0.5 * d - engine.particles().y[0];
     const double expected = net_weight(d) / scene.forces.stiffness_normal;
-    // The reference still rings (restitution 1, drag the only damping) by ~1e-3. The
+    // The explicit integrator still rings (restitution 1, drag the only damping) by ~1e-3. The
     // exponential step is long (the grain is supported): the contact cancels a free fall of
     // ~0.1 mm per step to leave a 1e-12 m overlap, so round-off is ~1e-6 of it.
-    const double tolerance = std::string(method) == "reference" ? 1e-2 : 1e-5;
+    const double tolerance = std::string(method) == "explicit" ? 1e-2 : 1e-5;
     EXPECT_NEAR(overlap, expected, tolerance * expected) << method;
     EXPECT_NEAR(engine.particles().vy[0], 0.0, 1e-6) << method;
   }
@@ -91,7 +91,7 @@ TEST(EngineContact, RestingGrainIsSettledOutOfTheLocalSteps) {
 // m, reduced mass m/2: the largest overlap is 2 v0 sqrt(m / (2 K_N)), the contact lasts
 // pi sqrt(m / (2 K_N)), and they leave with their velocities reversed (restitution 1).
 TEST(EngineContact, HeadOnCollisionMatchesTheSpring) {
-  Scene scene = scene_with("off", "reference");
+  Scene scene = scene_with("off", "explicit");
   scene.forces.weight = scene.forces.buoyancy = false;
   scene.integrator.max_step = 1e-10;
   scene.integrator.adaptive = false;
@@ -153,7 +153,7 @@ TEST(ContactForce, RollingAndSlidingAgainstHandComputation) {
 // tangential impulse each grain receives is mu times the normal one, slightly less for the
 // short sticking start. Equal grains: momentum conserved, equal spins.
 TEST(EngineContact, SlidingContactTransfersMuTimesTheNormalImpulse) {
-  Scene scene = scene_with("off", "reference");
+  Scene scene = scene_with("off", "explicit");
   scene.forces.weight = scene.forces.buoyancy = false;
   scene.forces.friction = 0.3;
   scene.integrator.max_step = 2e-11;
@@ -175,7 +175,7 @@ TEST(EngineContact, SlidingContactTransfersMuTimesTheNormalImpulse) {
 // Every pair force has its opposite: with no fluid and no gravity, a random 1:28 cluster of
 // overlapping grains flying apart keeps its total momentum at zero.
 TEST(EngineContact, PairForcesSumToZero) {
-  for (const char* method : {"reference", "exponential"}) {
+  for (const char* method : {"explicit", "exponential"}) {
     Scene scene = scene_with("off", method, 2);
     scene.forces.weight = scene.forces.buoyancy = false;
     // Soft springs so that deep random overlaps fly apart at moderate speeds.
@@ -198,7 +198,7 @@ TEST(EngineContact, PairForcesSumToZero) {
     }
     EXPECT_GT(scale, 0) << method;
     EXPECT_GT(engine.stats().max_overlap_ratio, 0.0) << method;
-    // The reference applies the pair forces as they are; the exponential integrator's
+    // The explicit integrator applies the pair forces as they are; the exponential integrator's
     // projection gives both partners of a pair the same force change, and each particle's
     // velocity change is its displacement times m / (force dt): both exact to round-off.
     const double tolerance = 1e-12;

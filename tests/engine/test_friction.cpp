@@ -1,4 +1,4 @@
-// Coulomb friction in the exponential integrator's contact projection, against the reference
+// Coulomb friction in the exponential integrator's contact projection, against the explicit
 // integrator (the paper's explicit springs, Eqs. 1-5).
 
 #include <gtest/gtest.h>
@@ -32,15 +32,15 @@ std::vector<test::Grain> grain_on_grain() {
 }
 
 // It runs down the coarse grain's side and, with friction, rolls: its spin is what the
-// reference integrator gives (and close to its speed over its radius), its path the same.
-TEST(Friction, AGrainRollsDownAnotherAsWithTheReferenceIntegrator) {
+// explicit integrator gives (and close to its speed over its radius), its path the same.
+TEST(Friction, AGrainRollsDownAnotherAsWithTheExplicitIntegrator) {
   const double t = 2e-3;
   auto run = [&](const std::string& method, double mu) {
     Engine engine(engine_setup(friction_scene(method, mu)), sample_of(grain_on_grain()));
     engine.advance_to(t);
     return engine.particles();
   };
-  const Particles ref = run("reference", 0.5), fast = run("exponential", 0.5);
+  const Particles ref = run("explicit", 0.5), fast = run("exponential", 0.5);
   EXPECT_NEAR(fast.x[1], ref.x[1], 0.02e-6);
   EXPECT_NEAR(fast.y[1], ref.y[1], 0.02e-6);
   // Measured -21.6 against -23.7 rad/s; its speed over its radius is 21.4.
@@ -50,12 +50,12 @@ TEST(Friction, AGrainRollsDownAnotherAsWithTheReferenceIntegrator) {
   EXPECT_NEAR(-fast.omega[1], rolling, 0.1 * rolling);
   // Without friction nothing turns.
   EXPECT_EQ(run("exponential", 0.0).omega[1], 0.0);
-  EXPECT_EQ(run("reference", 0.0).omega[1], 0.0);
+  EXPECT_EQ(run("explicit", 0.0).omega[1], 0.0);
 }
 
 // A small pile: three 40 um grains in a row on the (frictionless) floor, two in the grooves
 // above, one on top. Friction holds it: the bottom row spreads less than without. With a small
-// step the exponential integrator's pile is the reference integrator's.
+// step the exponential integrator's pile is the explicit integrator's.
 std::vector<test::Grain> small_pile() {
   const double d = 40e-6, r = 0.5 * d, h = d * std::sqrt(3.0) / 2 * (1 + 1e-7);
   std::vector<test::Grain> g;
@@ -77,12 +77,12 @@ PileShape pile(const std::string& method, double mu, double crossing) {
   return {p.x[2], p.y[5]};
 }
 
-TEST(Friction, SmallPileAsWithTheReferenceIntegrator) {
-  const PileShape ref = pile("reference", 0.5, 0.8), ref_free = pile("reference", 0.0, 0.8);
+TEST(Friction, SmallPileAsWithTheExplicitIntegrator) {
+  const PileShape ref = pile("explicit", 0.5, 0.8), ref_free = pile("explicit", 0.0, 0.8);
   const PileShape fast = pile("exponential", 0.5, 0.01);
-  // Measured at 20 ms: spread 46.93 um (reference) against 47.05, top 84.79 against 84.71;
-  // without friction the reference spreads to 51.03 um: friction's effect is 4.1 um, and the
-  // two integrators agree on it within 3 %.
+  // Measured at 20 ms: spread 46.93 um (explicit) against 47.05, top 84.79 against 84.71;
+  // without friction the explicit integrator spreads to 51.03 um: friction's effect is 4.1 um, and
+  // the two integrators agree on it within 3 %.
   EXPECT_GT(ref_free.spread - ref.spread, 3e-6);
   EXPECT_NEAR(fast.spread, ref.spread, 0.25e-6);
   EXPECT_NEAR(fast.top, ref.top, 0.25e-6);

@@ -1,4 +1,4 @@
-// The exponential integrator against the reference: its error shrinks with its step; runs are
+// The exponential integrator against the explicit one: its error shrinks with its step; runs are
 // deterministic; a blow-up is reported with the particle, the time and the quantity.
 #include <gtest/gtest.h>
 
@@ -39,17 +39,17 @@ double max_position_error(const Engine& a, const Engine& b, double scale) {
   return e / scale;
 }
 
-TEST(ExponentialIntegrator, ConvergesToTheReferenceAsTheStepShrinks) {
+TEST(ExponentialIntegrator, ConvergesToTheExplicitAsTheStepShrinks) {
   const double t = 0.005;
-  // The reference at a tenth of the paper's step, so that its own error stays below the
+  // The explicit integrator at a tenth of the paper's step, so that its own error stays below the
   // differences measured here.
-  Scene ref_scene = scene_with("di_felice", "reference");
-  ref_scene.integrator.adaptive = false;
-  ref_scene.integrator.step_factor = 0.01;
-  Engine reference(engine_setup(ref_scene), sample_of(cloud()));
-  reference.advance_to(t);
+  Scene fine_scene = scene_with("di_felice", "explicit");
+  fine_scene.integrator.adaptive = false;
+  fine_scene.integrator.step_factor = 0.01;
+  Engine fine(engine_setup(fine_scene), sample_of(cloud()));
+  fine.advance_to(t);
   // The distance the fastest grain falls, to scale errors.
-  const double scale = stokes::terminal_velocity(60e-6, 2500, ref_scene.fluid) * t;
+  const double scale = stokes::terminal_velocity(60e-6, 2500, fine_scene.fluid) * t;
 
   double previous = 1e9;
   for (double factor : {30.0, 10.0, 1.0}) {  // 300x, 100x and 10x the paper's step
@@ -58,10 +58,10 @@ TEST(ExponentialIntegrator, ConvergesToTheReferenceAsTheStepShrinks) {
     scene.integrator.local_steps = false;  // the common step bounded by the factor
     Engine fast(engine_setup(scene), sample_of(cloud()));
     fast.advance_to(t);
-    const double error = max_position_error(fast, reference, scale);
+    const double error = max_position_error(fast, fine, scale);
     EXPECT_LT(error, 0.5 * previous) << factor;
     EXPECT_LT(error, 0.01) << factor;
-    EXPECT_LT(fast.stats().steps * 10, reference.stats().steps) << factor;
+    EXPECT_LT(fast.stats().steps * 10, fine.stats().steps) << factor;
     previous = error;
   }
   EXPECT_LT(previous, 1e-4);
@@ -93,7 +93,7 @@ TEST(ExponentialIntegrator, StepGrowsOnceTheCoarseGrainHasSettled) {
 }
 
 TEST(Engine, SameSeedAndThreadsGiveTheSameBits) {
-  for (const char* method : {"reference", "exponential"}) {
+  for (const char* method : {"explicit", "exponential"}) {
     Scene scene = scene_with("di_felice", method, 2);
     scene.forces.lubrication = true;
     Engine a(engine_setup(scene), sample_of(cloud())), b(engine_setup(scene), sample_of(cloud()));
@@ -131,7 +131,7 @@ TEST(Engine, TwoThreadRunsGiveTheSameBits) {
 // An explicit step far beyond the drag's stability bound (2 tau) blows the velocity up: the
 // engine reports the grain, the time and the quantity instead of carrying NaN.
 TEST(Engine, BlowUpIsReportedNotSilent) {
-  Scene scene = scene_with("stokes", "reference");
+  Scene scene = scene_with("stokes", "explicit");
   scene.forces.contact = false;
   scene.integrator.step_factor = 3.0;  // dt = 3 t_tr(95 %) ~ 9 tau
   scene.integrator.adaptive = false;
@@ -148,10 +148,10 @@ TEST(Engine, BlowUpIsReportedNotSilent) {
   }
 }
 
-// The reference's step grows once every grain has reached its terminal velocity (Sect. 4.6)
-// and stays below the explicit drag's stability bound.
-TEST(ReferenceIntegrator, StepGrowsAfterTerminalVelocity) {
-  Scene scene = scene_with("stokes", "reference");
+// The explicit integrator's step grows once every grain has reached its terminal velocity
+// (Sect. 4.6) and stays below the explicit drag's stability bound.
+TEST(ExplicitIntegrator, StepGrowsAfterTerminalVelocity) {
+  Scene scene = scene_with("stokes", "explicit");
   scene.forces.contact = false;
   const double d = 10e-6;
   Engine engine(engine_setup(scene), sample_of({{0, 0.4, d}}));

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <numbers>
 
-#include "core/engine/box_registry.h"
-#include "core/engine/free_flight.h"
+#include "core/engine/contact/box_registry.h"
+#include "core/engine/integrate/free_flight.h"
 #include "core/physics/stokes.h"
 #include "core/run/stage_setups.h"
 #include "engine_test_support.h"

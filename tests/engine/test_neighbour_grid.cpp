@@ -7,7 +7,7 @@
 #include <set>
 #include <utility>
 
-#include "core/engine/neighbour_grid.h"
+#include "core/engine/contact/neighbour_grid.h"
 
 namespace sedem {
 namespace {

@@ -63,12 +63,12 @@ TEST(EngineSettling, Table1WithExponentialIntegrator) {
   check_table1("exponential", 1.0, 0);
 }
 
-TEST(EngineSettling, Table1WithReferenceIntegrator) {
-  check_table1("reference", 1e-3, 2e-3);
+TEST(EngineSettling, Table1WithExplicitIntegrator) {
+  check_table1("explicit", 1e-3, 2e-3);
 }
 
 TEST(EngineSettling, TerminalVelocityIsStokesExactly) {
-  for (const char* method : {"exponential", "reference"}) {
+  for (const char* method : {"exponential", "explicit"}) {
     Scene scene = scene_with("stokes", method);
     scene.forces.contact = false;
     const double d = 25e-6;

@@ -50,11 +50,21 @@ TEST(SceneLoader, WrongTypeAndChoiceAreRejected) {
 
 TEST(SceneLoader, SetOverridesTheFile) {
   Scene s = parse_scene("[fluid]\nviscosity = 2e-3\n", "f.toml",
-                        {"fluid.viscosity=1.5e-3", "integrator.method=reference"});
+                        {"fluid.viscosity=1.5e-3", "integrator.method=explicit"});
   EXPECT_DOUBLE_EQ(s.fluid.viscosity, 1.5e-3);
-  EXPECT_EQ(s.integrator.method, "reference");
+  EXPECT_EQ(s.integrator.method, "explicit");
   EXPECT_NE(error_of("", {"fluid.viscosity=abc"}).find("--set: fluid.viscosity"),
             std::string::npos);
+}
+
+// The explicit integrator's former name: old scenes and run records still load, as explicit.
+TEST(SceneLoader, TheExplicitIntegratorsFormerNameStillLoads) {
+  Scene s = parse_scene("[integrator]\nmethod = \"reference\"\n", "old.toml");
+  EXPECT_EQ(integrator_method(s.integrator), IntegratorMethod::explicit_euler);
+  EXPECT_NE(resolved_toml(s).find("integrator.method = \"explicit\""), std::string::npos);
+  EXPECT_NE(
+      error_of("[integrator]\nmethod = \"euler\"\n").find("is not one of: explicit, exponential"),
+      std::string::npos);
 }
 
 TEST(SceneLoader, CrossChecksNameBothKeys) {

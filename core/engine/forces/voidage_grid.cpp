@@ -1,4 +1,4 @@
-#include "core/engine/voidage_grid.h"
+#include "core/engine/forces/voidage_grid.h"
 
 #include <omp.h>
 

@@ -11,15 +11,16 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/engine/engine_state.h"
-#include "core/engine/forces.h"
+#include "core/engine/contact/candidate_lists.h"
+#include "core/engine/contact/neighbour_grid.h"
+#include "core/engine/forces/force_model.h"
 #include "core/engine/instability.h"
-#include "core/engine/neighbour_grid.h"
-#include "core/engine/pair_history.h"
+#include "core/engine/state/engine_state.h"
+#include "core/engine/state/pair_history.h"
 
 namespace sedem {
 
-// Whether a step needs the force pass: pair forces (the reference integrator) or lubrication.
+// Whether a step needs the force pass: pair forces (the explicit integrator) or lubrication.
 // Otherwise a free particle feels only weight, buoyancy and drag, which the integrator applies
 // itself, and the exponential integrator's projection finds the contacts in its own one pass
 // over the candidate lists.
@@ -37,20 +38,11 @@ struct PassFacts {
 class ForcePass {
  public:
   void configure(const ForceModel& model, int threads);
-  // Candidate lists (Verlet): for each particle, in the grid's order, the partners found by
-  // the grid within radius[i] + radius[j] of the positions (x0, y0). Valid while no particle
-  // has moved more than half the margin the radii carry beyond the interaction range.
-  // With `frozen` (no force pass: the projection alone reads the lists), a frozen particle
-  // lists its coarser partners only: a same-level pair of a frozen and a moving particle is
-  // found from the moving side, and a bed of frozen grains costs little.
-  void build_lists(const NeighbourGrid& grid, std::size_t n, const double* x0, const double* y0,
-                   const double* radius, const std::uint8_t* frozen = nullptr);
-  void run(const EngineState& s, const NeighbourGrid& grid, const PairHistory& old_springs,
-           PairHistory& new_springs, double dt, ForceAccumulators& out, PassFacts& facts);
+  // Over the candidate lists (contact/candidate_lists.h), built on the same grid.
+  void run(const EngineState& s, const NeighbourGrid& grid, const CandidateLists& lists,
+           const PairHistory& old_springs, PairHistory& new_springs, double dt,
+           ForceAccumulators& out, PassFacts& facts);
   std::size_t bytes() const;
-  // The candidate lists: partners of order()[k] are list()[list_start()[k] .. [k + 1]).
-  const std::vector<std::uint32_t>& list_start() const { return list_start_; }
-  const std::vector<std::uint32_t>& list() const { return list_; }
 
  private:
   struct Reaction {
@@ -67,8 +59,6 @@ class ForcePass {
   std::vector<std::vector<Reaction>> reactions_;
   std::vector<std::vector<PairHistory::Entry>> springs_;
   std::vector<ThreadFacts> facts_;
-  std::vector<std::vector<std::uint32_t>> local_lists_;
-  std::vector<std::uint32_t> list_start_, list_;
 };
 
 }  // namespace sedem

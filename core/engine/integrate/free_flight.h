@@ -2,8 +2,8 @@
 
 // The motion of a grain that touches nothing: m dv/dt = F - c v with F (weight and buoyancy)
 // and c (its drag coefficient) held constant, solved exactly. The exponential integrator takes
-// one such update per step; a coasting grain (local_stepping.h) follows one over a whole window
-// of its own and is evaluated at any time inside it. Both use these formulas, so a grain's
+// one such update per step; a coasting grain (schedule/local_stepper.h) follows one over a whole
+// window of its own and is evaluated at any time inside it. Both use these formulas, so a grain's
 // position does not depend on which of the two moved it.
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include "core/engine/neighbour_grid.h"
+#include "core/engine/contact/neighbour_grid.h"
 
 #include <algorithm>
 #include <bit>

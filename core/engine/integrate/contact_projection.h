@@ -11,8 +11,8 @@
 // every sweep is a contraction. Each pair's dlambda is computed once and moves both partners
 // (exact action and reaction).
 //
-// One pass over the force pass's candidate lists, at the free positions, collects the
-// constraints: every pair or wall closer than a skin of half the smaller radius, or that held a
+// One pass over the candidate lists (contact/candidate_lists.h), at the free positions, collects
+// the constraints: every pair or wall closer than a skin of half the smaller radius, or that held a
 // force at the end of the last step (each step starts from those forces, kept by sample indices
 // so that re-sorting and list rebuilds keep them; saved in checkpoints: a resting bed is held
 // from the first sweep). The sweeps then run over that compact list only, so a dilute
@@ -21,15 +21,15 @@
 // constraints' moves in a fixed order: the result does not depend on the thread count. Pairs
 // pushed into contact from beyond the skin within one step are resolved at the next step.
 //
-// Friction (forces.friction > 0; walls stay frictionless, as in the reference integrator):
+// Friction (forces.friction > 0; walls stay frictionless, as in the explicit integrator):
 // each touching pair also gets a tangential force lambda_t, the compliant spring of Eq. 2,
 // lambda_t = -K_T g, with g the tangential displacement of a's contact point against b's
 // accumulated over the contact's life (the last step's -lambda_t / K_T plus this step's
 // relative motion, spins r w dt included), held by the Coulomb limit |lambda_t| <= mu lambda_n
 // of Eq. 4 (sliding when it binds). Its Jacobi update is the normal one's, along t, with the
 // rotations' mobility r^2 dt^2 / (2 I) added (I = m d^2 / 10; no drag on the spin, as in the
-// reference); the spins change by the torques r lambda_t. lambda_t does not depend on which
-// grain is a, and is kept across steps with lambda_n.
+// explicit integrator); the spins change by the torques r lambda_t. lambda_t does not depend on
+// which grain is a, and is kept across steps with lambda_n.
 
 #include <cmath>
 #include <cstddef>
@@ -37,12 +37,12 @@
 #include <iosfwd>
 #include <vector>
 
-#include "core/engine/engine_state.h"
-#include "core/engine/force_pass.h"
-#include "core/engine/forces.h"
+#include "core/engine/contact/candidate_lists.h"
+#include "core/engine/contact/neighbour_grid.h"
+#include "core/engine/forces/force_model.h"
 #include "core/engine/instability.h"
-#include "core/engine/neighbour_grid.h"
-#include "core/engine/pair_history.h"
+#include "core/engine/state/engine_state.h"
+#include "core/engine/state/pair_history.h"
 
 namespace sedem {
 
@@ -81,7 +81,7 @@ class ContactProjection {
   // mobility). Moves (x, y) from their free values and adds the matching velocity change.
   // With friction (friction()), (start_x, start_y) are the positions at the start of the step
   // (before the free update), for the tangential motion over it; required.
-  ProjectionFacts run(EngineState& s, const NeighbourGrid& grid, const ForcePass& pass,
+  ProjectionFacts run(EngineState& s, const NeighbourGrid& grid, const CandidateLists& lists,
                       const std::vector<double>& drag, double dt, const double* start_x = nullptr,
                       const double* start_y = nullptr);
   bool friction() const { return friction_; }
@@ -115,7 +115,7 @@ class ContactProjection {
     warm,   // displacements of the current forces, unchanged
     solve,  // one Jacobi sweep: change the forces, their displacements
   };
-  void collect(const EngineState& s, const NeighbourGrid& grid, const ForcePass& pass);
+  void collect(const EngineState& s, const NeighbourGrid& grid, const CandidateLists& lists);
   void index_participants(const EngineState& s, const std::vector<double>& drag, double dt);
   // The tangential force's change of constraint c in a solving sweep (sets c.mt), friction on.
   double friction_change(Constraint& c, const EngineState& s, double dx, double dy, double dist,

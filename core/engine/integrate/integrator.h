@@ -2,7 +2,7 @@
 
 // Integrators of Eq. 5, one class each; they read the force pass's sums and move the state.
 //
-// reference: explicit (symplectic Euler: v += dt a, then x += dt v), as close to the paper as an
+// explicit: symplectic Euler (v += dt a, then x += dt v), as close to the paper as an
 //   explicit scheme gets. Step rule (Sect. 4.6): dt = step_factor * min t_tr (t_tr: time to 95 %
 //   of the terminal velocity of the smallest grain; 0.1 in the paper). Once every free particle
 //   has reached its terminal velocity (velocity change per step below 1e-3 u_tr over a check
@@ -39,27 +39,15 @@
 #include <memory>
 #include <vector>
 
+#include "core/engine/contact/candidate_lists.h"
+#include "core/engine/contact/neighbour_grid.h"
 #include "core/engine/engine_config.h"
-#include "core/engine/engine_state.h"
-#include "core/engine/force_pass.h"
-#include "core/engine/forces.h"
-#include "core/engine/neighbour_grid.h"
-#include "core/engine/voidage_grid.h"
+#include "core/engine/forces/drag_evaluator.h"
+#include "core/engine/forces/force_model.h"
+#include "core/engine/forces/force_pass.h"
+#include "core/engine/state/engine_state.h"
 
 namespace sedem {
-
-// The drag as a linear coefficient c (F = -c v), for the integrators.
-struct DragEvaluator {
-  const ForceModel* model = nullptr;
-  const VoidageGrid* voidage = nullptr;
-  double tail_re = 0;  // below it the Di Felice exponent's Re term is lost to round-off
-  // `weight`: the grain's statistical weight, left out of its voidage if the model says so.
-  double coefficient(double d, double weight, double speed, double x, double y) const;
-};
-
-// The Reynolds number below which 0.65 exp(-(1.5 - log10 Re)^2 / 2) |ln eps| < 2^-54 for every
-// voidage down to `min_voidage`, with a margin.
-double di_felice_tail_re(double min_voidage);
 
 struct IntegratorContext {
   const ForceModel* model = nullptr;
@@ -73,7 +61,7 @@ struct IntegratorContext {
   double max_radius = 0;
   // exponential: the candidate lists its contact projection gathers over (the engine's).
   const NeighbourGrid* grid = nullptr;
-  const ForcePass* pass = nullptr;
+  const CandidateLists* lists = nullptr;
   int contact_sweeps = 32;  // at most, per step
   std::size_t grains = 0;   // the sample's size (sample indices run below it)
   // Local time stepping: the state holds only the grains near a contact, few and about to
@@ -106,5 +94,11 @@ class Integrator {
 
 std::unique_ptr<Integrator> make_integrator(const IntegratorConfig& config,
                                             const IntegratorContext& context);
+// One per integrator (explicit_integrator.cpp, exponential_integrator.cpp); make_integrator
+// chooses.
+std::unique_ptr<Integrator> make_explicit_integrator(const IntegratorConfig& config,
+                                                     const IntegratorContext& context);
+std::unique_ptr<Integrator> make_exponential_integrator(const IntegratorConfig& config,
+                                                        const IntegratorContext& context);
 
 }  // namespace sedem

@@ -1,4 +1,4 @@
-#include "core/engine/box_registry.h"
+#include "core/engine/contact/box_registry.h"
 
 #include <algorithm>
 #include <cmath>

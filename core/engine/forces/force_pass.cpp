@@ -1,9 +1,11 @@
-#include "core/engine/force_pass.h"
+#include "core/engine/forces/force_pass.h"
 
 #include <omp.h>
 
 #include <algorithm>
 #include <cmath>
+
+#include "core/engine/contact/walls.h"
 
 namespace sedem {
 
@@ -13,52 +15,12 @@ void ForcePass::configure(const ForceModel& model, int threads) {
   reactions_.resize(std::size_t(threads_));
   springs_.resize(std::size_t(threads_));
   facts_.resize(std::size_t(threads_));
-  local_lists_.resize(std::size_t(threads_));
-}
-
-void ForcePass::build_lists(const NeighbourGrid& grid, std::size_t n, const double* x0,
-                            const double* y0, const double* radius, const std::uint8_t* frozen) {
-  const auto& order = grid.order();
-  list_start_.resize(n + 1);
-  list_start_[0] = 0;
-#pragma omp parallel num_threads(threads_) if (threads_ > 1)
-  {
-    auto& mine = local_lists_[std::size_t(omp_get_thread_num())];
-    mine.clear();
-#pragma omp for schedule(static)
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::uint32_t i = order[k];
-      std::uint32_t count = 0;
-      grid.for_each_candidate(
-          i, x0, y0, radius,
-          [&](std::uint32_t j) {
-            const double dx = x0[j] - x0[i], dy = y0[j] - y0[i], reach = radius[i] + radius[j];
-            if (dx * dx + dy * dy < reach * reach) {
-              mine.push_back(j);
-              ++count;
-            }
-          },
-          frozen && frozen[i]);
-      list_start_[k + 1] = count;
-    }
-  }
-  for (std::size_t k = 0; k < n; ++k) list_start_[k + 1] += list_start_[k];
-  list_.resize(list_start_[n]);
-  // Static schedule: thread t handled the t-th contiguous block of k, so concatenating the
-  // threads' lists in order gives the lists in k order.
-  std::size_t at = 0;
-  for (const auto& l : local_lists_) {
-    std::copy(l.begin(), l.end(), list_.begin() + std::ptrdiff_t(at));
-    at += l.size();
-  }
 }
 
 std::size_t ForcePass::bytes() const {
   std::size_t b = 0;
   for (const auto& r : reactions_) b += r.capacity() * sizeof(Reaction);
   for (const auto& e : springs_) b += e.capacity() * sizeof(PairHistory::Entry);
-  for (const auto& l : local_lists_) b += l.capacity() * 4;
-  b += (list_start_.capacity() + list_.capacity()) * 4;
   return b;
 }
 
@@ -70,8 +32,9 @@ inline bool too_deep(double overlap, double ri, double rj) {
 }
 }  // namespace
 
-void ForcePass::run(const EngineState& s, const NeighbourGrid& grid, const PairHistory& old_springs,
-                    PairHistory& new_springs, double dt, ForceAccumulators& out, PassFacts& facts) {
+void ForcePass::run(const EngineState& s, const NeighbourGrid& grid, const CandidateLists& lists,
+                    const PairHistory& old_springs, PairHistory& new_springs, double dt,
+                    ForceAccumulators& out, PassFacts& facts) {
   const std::size_t n = s.size();
   const ForceModel& m = model_;
   const double* x = s.x.data();
@@ -83,7 +46,9 @@ void ForcePass::run(const EngineState& s, const NeighbourGrid& grid, const PairH
   const std::uint32_t* origin = s.origin.data();
   const std::uint8_t* frozen = s.frozen.data();
   const auto& order = grid.order();
-  const double hw = m.half_width;
+  const std::uint32_t* list_start = lists.list_start().data();
+  const std::uint32_t* list = lists.list().data();
+  const Walls walls{m.half_width};
   const double reach = m.lubrication_reach();
   const double pair_stiffness = 2 * (m.kn + (m.friction ? m.kt : 0.0));
 
@@ -106,7 +71,8 @@ void ForcePass::run(const EngineState& s, const NeighbourGrid& grid, const PairH
       double worst = 0;
 
       if (m.contact && !frozen[i]) {
-        const double left = -hw - (x[i] - ri), right = x[i] + ri - hw, bottom = ri - y[i];
+        const Walls::Gaps gap = walls.gaps(x[i], y[i], ri);
+        const double left = gap.left, right = gap.right, bottom = gap.bottom;
         const double kw = m.contact_forces ? m.kn : 0.0;
         if (left > 0)
           fx += kw * left, stiff += m.kn, worst = std::max(worst, left), touching = true;
@@ -121,8 +87,8 @@ void ForcePass::run(const EngineState& s, const NeighbourGrid& grid, const PairH
 
       if (m.contact || m.lubrication) {
         const int own = grid.level(i);
-        for (std::uint32_t c = list_start_[k], e = list_start_[k + 1]; c < e; ++c) {
-          const std::uint32_t j = list_[c];
+        for (std::uint32_t c = list_start[k], e = list_start[k + 1]; c < e; ++c) {
+          const std::uint32_t j = list[c];
           if (frozen[i] && frozen[j]) continue;
           const bool cross = grid.level(j) != own;  // found from this side only
           const double dx = x[j] - x[i], dy = y[j] - y[i];

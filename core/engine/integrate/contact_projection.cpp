@@ -1,4 +1,4 @@
-#include "core/engine/contact_projection.h"
+#include "core/engine/integrate/contact_projection.h"
 
 #include <omp.h>
 
@@ -7,6 +7,8 @@
 #include <istream>
 #include <ostream>
 #include <stdexcept>
+
+#include "core/engine/contact/walls.h"
 
 namespace sedem {
 
@@ -87,7 +89,7 @@ void ContactProjection::load(std::istream& in) {
 // then pairs (a same-level pair from its lower sample index, a cross-level pair from its finer
 // side, which alone holds it in its list).
 void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
-                                const ForcePass& pass) {
+                                const CandidateLists& lists) {
   const std::size_t n = s.size();
   const double* x = s.x.data();
   const double* y = s.y.data();
@@ -96,9 +98,9 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
   const std::uint8_t* frozen = s.frozen.data();
   const std::uint8_t* held = held_.data();
   const auto& order = grid.order();
-  const std::uint32_t* start = pass.list_start().data();
-  const std::uint32_t* list = pass.list().data();
-  const double hw = model_.half_width;
+  const std::uint32_t* start = lists.list_start().data();
+  const std::uint32_t* list = lists.list().data();
+  const Walls walls{model_.half_width};
   const bool warm = warm_.size() > 0;
 
 #pragma omp parallel num_threads(threads_) if (threads_ > 1)
@@ -113,8 +115,8 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
       const std::uint32_t oi = origin[i];
       const bool held_i = warm && held[oi];
       if (!frozen[i]) {
-        const double left = -hw - (x[i] - ri), right = x[i] + ri - hw, bottom = ri - y[i];
-        const double side = std::max(left, right);
+        const Walls::Gaps gap = walls.gaps(x[i], y[i], ri);
+        const double side = std::max(gap.left, gap.right), bottom = gap.bottom;
         const double side_force = held_i ? warm_.find(PairHistory::key(oi, kSide)) : 0.0;
         const double floor_force = held_i ? warm_.find(PairHistory::key(oi, kFloor)) : 0.0;
         if (side > -kSkin * ri || side_force > 0)
@@ -233,7 +235,8 @@ double ContactProjection::sweep(EngineState& s, Mode mode) {
   double* x = s.x.data();
   double* y = s.y.data();
   const double* d = s.diameter.data();
-  const double hw = model_.half_width, compliance = 1.0 / model_.kn;
+  const Walls walls{model_.half_width};
+  const double compliance = 1.0 / model_.kn;
   const bool starting = mode == Mode::start, solving = mode == Mode::solve;
   // The change of a force in this sweep (its value when only warming up).
   auto change = [&](double& force, double overlap, double denominator) {
@@ -256,7 +259,8 @@ double ContactProjection::sweep(EngineState& s, Mode mode) {
       if (c.b >= kSide) {
         double overlap = ra - y[a], direction = 0;
         if (c.b == kSide) {
-          const double left = -hw - (x[a] - ra), right = x[a] + ra - hw;
+          const Walls::Gaps gap = walls.gaps(x[a], y[a], ra);
+          const double left = gap.left, right = gap.right;
           overlap = std::max(left, right);
           direction = left > right ? 1.0 : -1.0;
         }
@@ -344,7 +348,7 @@ void ContactProjection::mark_touching(std::vector<double>& touching) const {
 }
 
 ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid,
-                                       const ForcePass& pass, const std::vector<double>& drag,
+                                       const CandidateLists& lists, const std::vector<double>& drag,
                                        double dt, const double* start_x, const double* start_y) {
   const std::size_t n = std::max(grains_, s.size());
   if (held_.size() != n) {  // first run, or after a checkpoint was loaded
@@ -360,7 +364,7 @@ ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid
     }
   }
   ProjectionFacts facts;
-  collect(s, grid, pass);
+  collect(s, grid, lists);
   index_participants(s, drag, dt);
   if (friction_ && !(start_x && start_y))
     throw std::invalid_argument("contact projection: friction needs the step's start positions");
@@ -391,13 +395,13 @@ ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid
       // alternate between nought and twice its rate: the spin has no drag to damp it.
       if (friction_ && !s.frozen[p]) s.omega[p] = turned_[k] / dt;
     }
-    const double hw = model_.half_width;
+    const Walls walls{model_.half_width};
     // The overlaps left: the worst, and any deeper than a radius into a wall or than the
     // smaller diameter between two grains (a blow-up).
     for (const Constraint& c : constraints_) {
       const double ra = 0.5 * d[c.a];
       if (c.b >= kSide) {
-        const double overlap = c.b == kSide ? std::abs(s.x[c.a]) + ra - hw : ra - s.y[c.a];
+        const double overlap = c.b == kSide ? walls.side_depth(s.x[c.a], ra) : ra - s.y[c.a];
         if (overlap > ra) facts.blowup.note(s.origin[c.a], "wall overlap", overlap);
         facts.max_overlap_ratio = std::max(facts.max_overlap_ratio, overlap / ra);
       } else {

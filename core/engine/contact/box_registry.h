@@ -1,6 +1,6 @@
 #pragma once
 
-// Space-time boxes of the local time stepping (local_stepping.h): every grain holds one
+// Space-time boxes of the local time stepping (schedule/local_stepper.h): every grain holds one
 // axis-aligned box that it cannot leave before its next update — a coasting grain the box its
 // exact trajectory sweeps over its window, a grain stepped with the others its position with
 // an allowance of travel, a settled grain its own disc — each widened by its radius and a skin.

@@ -1,4 +1,4 @@
-#include "core/engine/pair_history.h"
+#include "core/engine/state/pair_history.h"
 
 #include <algorithm>
 #include <bit>

@@ -18,7 +18,7 @@ struct ForceModel {
   bool weight = true, buoyancy = true, contact = true, friction = true, lubrication = false;
   bool suspension_contacts = true;  // local steps: coasting grains see each other's boxes
   // false: the force pass only detects contacts; the integrator resolves them as constraints
-  // (contact_projection.h), friction included.
+  // (integrate/contact_projection.h), friction included.
   bool contact_forces = true;
   DragLaw drag = DragLaw::di_felice;
   bool voidage_excludes_self = true;  // Di Felice: see VoidageGrid::excluding
@@ -27,7 +27,7 @@ struct ForceModel {
   double particle_density = 2500, fluid_density = 1000, viscosity = 1e-3, gravity = 9.81;
   double half_width = 0.03175;
   // Extra search distance, in radii, within which a pair counts as about to touch (the
-  // reference integrator shortens its step before contact rather than after).
+  // explicit integrator shortens its step before contact rather than after).
   double skin = 0;
 
   double volume(double d) const { return std::numbers::pi / 6.0 * d * d * d; }
@@ -37,7 +37,8 @@ struct ForceModel {
     return -((weight ? particle_density : 0.0) - (buoyancy ? fluid_density : 0.0)) * gravity *
            volume(d);
   }
-  // F_s of Eq. 10 as read in DESIGN.md: the Stokes drag at terminal velocity = net weight.
+  // F_s of Eq. 10 as read in docs/physics.md ("Contacts and lubrication (Eq. 10)"): the Stokes drag
+  // at terminal velocity = net weight.
   double stokes_terminal_drag(double d) const {
     return (particle_density - fluid_density) * gravity * volume(d);
   }
@@ -82,7 +83,8 @@ inline ContactResult contact_force(const ForceModel& m, double nx, double ny, do
   return c;
 }
 
-// Eq. 10 as read in DESIGN.md: the push on particle i (radius ri, diameters di, dk) at gap g.
+// Eq. 10 as read in docs/physics.md ("Contacts and lubrication (Eq. 10)"): the push on particle i
+// (radius ri, diameters di, dk) at gap g.
 inline double lubrication_force(const ForceModel& m, double di, double dk, double gap) {
   const double ri = 0.5 * di;
   const double r = 2 * di / (di + dk);

@@ -27,7 +27,7 @@ struct EngineState {
 // What the force pass leaves for the integrator, per particle (same order as the state).
 // `stiffness` bounds how stiffly contacts and lubrication hold the particle (non-zero: it
 // touches); `lubrication_stiffness` is the lubrication's share, which the exponential
-// integrator folds into an implicit damping (see integrators.h).
+// integrator folds into an implicit damping (see integrate/integrator.h).
 struct ForceAccumulators {
   std::vector<double> fx, fy, torque;
   std::vector<double> stiffness, spin_stiffness, lubrication_stiffness;

@@ -1,0 +1,107 @@
+#include "core/engine/contact/candidate_lists.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sedem {
+
+void CandidateLists::configure(int threads) {
+  threads_ = std::max(1, threads);
+  local_lists_.resize(std::size_t(threads_));
+}
+
+void CandidateLists::rebuild(const EngineState& s, NeighbourGrid& grid, bool frozen_aware) {
+  x0 = s.x;
+  y0 = s.y;
+  rebuild_at_build_positions(s, grid, frozen_aware);
+}
+
+void CandidateLists::rebuild_at_build_positions(const EngineState& s, NeighbourGrid& grid,
+                                                bool frozen_aware) {
+  const std::size_t n = s.size();
+  grid.build(n, x0.data(), y0.data(), search.data());
+  build(grid, n, x0.data(), y0.data(), search.data(), frozen_aware ? s.frozen.data() : nullptr);
+  stale = false;
+}
+
+void CandidateLists::build(const NeighbourGrid& grid, std::size_t n, const double* bx,
+                           const double* by, const double* radius, const std::uint8_t* frozen) {
+  const auto& order = grid.order();
+  list_start_.resize(n + 1);
+  list_start_[0] = 0;
+#pragma omp parallel num_threads(threads_) if (threads_ > 1)
+  {
+    auto& mine = local_lists_[std::size_t(omp_get_thread_num())];
+    mine.clear();
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::uint32_t i = order[k];
+      std::uint32_t count = 0;
+      grid.for_each_candidate(
+          i, bx, by, radius,
+          [&](std::uint32_t j) {
+            const double dx = bx[j] - bx[i], dy = by[j] - by[i], reach = radius[i] + radius[j];
+            if (dx * dx + dy * dy < reach * reach) {
+              mine.push_back(j);
+              ++count;
+            }
+          },
+          frozen && frozen[i]);
+      list_start_[k + 1] = count;
+    }
+  }
+  for (std::size_t k = 0; k < n; ++k) list_start_[k + 1] += list_start_[k];
+  list_.resize(list_start_[n]);
+  // Static schedule: thread t handled the t-th contiguous block of k, so concatenating the
+  // threads' lists in order gives the lists in k order.
+  std::size_t at = 0;
+  for (const auto& l : local_lists_) {
+    std::copy(l.begin(), l.end(), list_.begin() + std::ptrdiff_t(at));
+    at += l.size();
+  }
+}
+
+// A pair's distance shrinks by at most the sum of both moves; the lists hold every pair within
+// the interaction range plus margin (r_i + r_j), so they stay complete while
+// move_i + move_j < margin (r_i + r_j) for every pair, i.e. while the two largest excesses
+// e = move - margin r (1% kept in reserve) sum to less than zero. A small grain carried
+// along by a large one thus uses the margin of its partners too, not its own margin alone.
+bool CandidateLists::moved_beyond_margin(const EngineState& s) {
+  const std::size_t n = s.size();
+  const double* x = s.x.data();
+  const double* y = s.y.data();
+  const double* d = s.diameter.data();
+  const double share = 0.99 * 0.5 * margin;
+  const int threads = threads_;
+  std::vector<double>& top = top_excess_;
+  top.assign(2 * std::size_t(threads), -HUGE_VAL);  // no allocation after the first step
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+    double first = -HUGE_VAL, second = -HUGE_VAL;
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      const double dx = x[i] - x0[i], dy = y[i] - y0[i];
+      const double excess = std::sqrt(dx * dx + dy * dy) - share * d[i];
+      if (excess > second) {
+        second = std::max(std::min(first, excess), second);
+        first = std::max(first, excess);
+      }
+    }
+    const std::size_t t = std::size_t(omp_get_thread_num());
+    top[2 * t] = first;
+    top[2 * t + 1] = second;
+  }
+  std::sort(top.begin(), top.end());
+  return n > 1 && top[top.size() - 1] + top[top.size() - 2] >= 0;
+}
+
+std::size_t CandidateLists::bytes() const {
+  std::size_t b = 0;
+  for (const auto& l : local_lists_) b += l.capacity() * 4;
+  b += (list_start_.capacity() + list_.capacity()) * 4;
+  return b;
+}
+
+}  // namespace sedem

@@ -1,0 +1,143 @@
+#include "core/engine/schedule/engine_parts.h"
+
+#include <omp.h>
+
+#include <algorithm>
+
+#include "core/engine/instability.h"
+#include "core/physics/stokes.h"
+
+namespace sedem {
+
+namespace {
+
+ForceModel force_model(const EngineSetup& setup, double particle_density) {
+  const ForcesConfig& f = setup.forces;
+  ForceModel m;
+  m.weight = f.weight;
+  m.buoyancy = f.buoyancy;
+  m.contact = f.contact;
+  m.suspension_contacts = f.suspension_contacts;
+  m.friction = f.contact && f.friction > 0;
+  m.lubrication = f.lubrication;
+  m.drag = f.drag == "off"      ? DragLaw::off
+           : f.drag == "stokes" ? DragLaw::stokes
+                                : DragLaw::di_felice;
+  m.voidage_excludes_self = f.voidage_excludes_self;
+  m.kn = f.stiffness_normal;
+  m.kt = f.stiffness_tangential;
+  m.mu = f.friction;
+  m.lubrication_intensity = f.lubrication_intensity;
+  m.lubrication_range = f.lubrication_range;
+  m.particle_density = particle_density;
+  m.fluid_density = setup.fluid.density;
+  m.viscosity = setup.fluid.viscosity;
+  m.gravity = setup.fluid.gravity;
+  m.half_width = setup.cylinder.half_width();
+  return m;
+}
+
+// The margin of the candidate lists, in radii. The exponential integrator's grains move up to
+// crossing_fraction radii a step; a margin of a few steps' travel keeps rebuilds to one every
+// few steps (a dilute suspension has almost no candidates anyway, and a settled bed is mostly
+// frozen), 3 radii at least.
+double list_margin(const IntegratorConfig& c) {
+  return integrator_method(c) == IntegratorMethod::explicit_euler
+             ? 3.0
+             : std::max(3.0, 4.0 * c.crossing_fraction);
+}
+
+}  // namespace
+
+EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
+    : setup(engine_setup), sample(std::move(engine_sample)) {
+  const Particles& p = sample.particles;
+  const std::size_t n = p.size();
+  threads = setup.integrator.threads > 0 ? int(setup.integrator.threads) : omp_get_max_threads();
+  // Below a few thousand particles a step takes microseconds and forking threads costs more.
+  if (n < 2048) threads = 1;
+  model = force_model(setup, sample.particle_density);
+  // Local time stepping is serial (its work is in syncs taken one at a time, in time order).
+  // It needs no force pass, so not with lubrication.
+  local = integrator_method(setup.integrator) == IntegratorMethod::exponential &&
+          setup.integrator.local_steps && !model.lubrication;
+  if (local) threads = 1;
+  if (integrator_method(setup.integrator) == IntegratorMethod::explicit_euler)
+    model.skin = 0.25;
+  else
+    model.contact_forces = false;  // the exponential integrator projects contacts
+
+  state.resize(n);
+  pass_needed = needs_force_pass(model);
+  if (pass_needed) forces.resize(n);
+  lists.search.resize(n);
+  double dmin = 0, dmax = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    state.x[i] = p.x[i];
+    state.y[i] = p.y[i];
+    state.vx[i] = p.vx.empty() ? 0 : p.vx[i];
+    state.vy[i] = p.vy.empty() ? 0 : p.vy[i];
+    state.omega[i] = p.omega.empty() ? 0 : p.omega[i];
+    state.diameter[i] = p.diameter[i];
+    state.weight[i] = p.weight[i];
+    state.origin[i] = std::uint32_t(i);
+    state.frozen[i] = 0;
+    dmin = i == 0 ? p.diameter[i] : std::min(dmin, p.diameter[i]);
+    dmax = std::max(dmax, p.diameter[i]);
+  }
+  const double reach = model.lubrication_reach();
+  lists.margin = list_margin(setup.integrator);
+  for (std::size_t i = 0; i < n; ++i)
+    lists.search[i] = 0.5 * state.diameter[i] * (1 + reach + model.skin + lists.margin);
+  if (n == 0) dmin = dmax = 1e-6;
+
+  const Cylinder& cyl = setup.cylinder;
+  grid.configure(dmin * (1 + reach + model.skin + lists.margin),
+                 dmax * (1 + reach + model.skin + lists.margin), cyl.half_width(), cyl.height,
+                 threads);
+  voidage.configure(setup.forces.voidage_cell, cyl.half_width(), cyl.height, cyl.slab_thickness(),
+                    setup.forces.min_voidage, threads);
+  pass.configure(model, threads);
+  lists.configure(threads);
+
+  const Fluid& fluid = setup.fluid;
+  IntegratorContext ctx;
+  ctx.model = &model;
+  ctx.drag = DragEvaluator{&model, &voidage, di_felice_tail_re(setup.forces.min_voidage)};
+  ctx.threads = threads;
+  ctx.min_response_time = stokes::response_time(dmin, model.particle_density, fluid, 0.95);
+  ctx.min_terminal_speed = stokes::terminal_velocity(dmin, model.particle_density, fluid);
+  // Contacts between the smallest grains legitimately reach ~1 m/s (a 1 nm overlap on a
+  // 2.5 um grain stores that much); far beyond that a speed is a blow-up.
+  ctx.runaway_speed =
+      std::max(10.0, 1e4 * stokes::terminal_velocity(dmax, model.particle_density, fluid));
+  ctx.min_radius = 0.5 * dmin;
+  ctx.max_terminal_speed = stokes::terminal_velocity(dmax, model.particle_density, fluid) / 0.96;
+  ctx.max_radius = 0.5 * dmax;
+  ctx.grid = &grid;
+  ctx.lists = &lists;
+  ctx.grains = n;
+  ctx.members_only = local;
+  drag = ctx.drag;
+  integrator = make_integrator(setup.integrator, ctx);
+  freeze.height =
+      setup.integrator.freeze_settled && model.contact ? setup.lowest_measured_height : 0.0;
+  // Without the force pass, the freeze check reads the contacts the projection marks.
+  if (!pass_needed && freeze.enabled()) forces.stiffness.resize(n);
+}
+
+void EngineParts::rebuild_lists() {
+  lists.rebuild(state, grid, local);
+  ++stats.list_builds;
+}
+
+void EngineParts::resort_and_rebuild_lists() {
+  if (resort.due(stats.steps)) resort.run(state, lists.search, grid, stats.steps);
+  rebuild_lists();
+}
+
+void EngineParts::throw_blowup(const Blowup& b, double at) const {
+  throw InstabilityError(sample.particles.id[b.particle], at, b.quantity, b.value);
+}
+
+}  // namespace sedem

@@ -1,0 +1,65 @@
+#pragma once
+
+// What the engine owns and its stepper works on: the setup, the sample, the state of the
+// particles in the engine's order, the forces, the contact search, the integrator, the time
+// and the counters. Engine (engine.h) owns one; the global or the local stepper advances it.
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+
+#include "core/engine/contact/candidate_lists.h"
+#include "core/engine/contact/neighbour_grid.h"
+#include "core/engine/engine_setup.h"
+#include "core/engine/forces/drag_evaluator.h"
+#include "core/engine/forces/force_model.h"
+#include "core/engine/forces/force_pass.h"
+#include "core/engine/forces/voidage_grid.h"
+#include "core/engine/integrate/integrator.h"
+#include "core/engine/schedule/periodic_tasks.h"
+#include "core/engine/state/engine_state.h"
+#include "core/engine/state/pair_history.h"
+#include "core/model/engine_stats.h"
+#include "core/model/sample.h"
+
+namespace sedem {
+
+struct EngineParts {
+  // Builds everything from the setup and the sample, the integrator included; the stepper then
+  // takes its first look (GlobalStepper, LocalStepper).
+  EngineParts(const EngineSetup& setup, Sample sample);
+  // The integrator and the grids point into the parts: they stay where they were built.
+  EngineParts(const EngineParts&) = delete;
+  EngineParts& operator=(const EngineParts&) = delete;
+
+  // Rebuilds the candidate lists at the current positions and counts it.
+  void rebuild_lists();
+  // The same, the state first re-sorted in grid order if the resort task is due.
+  void resort_and_rebuild_lists();
+  // Throws InstabilityError for a blow-up the integrator or the force pass noted.
+  [[noreturn]] void throw_blowup(const Blowup& b, double at) const;
+
+  EngineSetup setup;
+  Sample sample;  // its particles are brought up to date on demand (Engine::particles)
+  EngineState state;
+  ForceAccumulators forces;
+  ForceModel model;
+  NeighbourGrid grid;
+  CandidateLists lists;
+  VoidageGrid voidage;
+  ForcePass pass;
+  PairHistory springs, next_springs;
+  PassFacts facts;
+  DragEvaluator drag;
+  std::unique_ptr<Integrator> integrator;
+  ResortTask resort;
+  FreezeTask freeze;
+  int threads = 1;
+  bool pass_needed = true;  // see needs_force_pass
+  // Whether free grains coast on windows of their own (the local stepper).
+  bool local = false;
+  double time = 0;
+  EngineStats stats;
+};
+
+}  // namespace sedem

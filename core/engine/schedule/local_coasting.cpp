@@ -1,0 +1,217 @@
+#include "core/engine/schedule/local_stepper.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sedem {
+
+// Without suspension contacts, a grain that is coasting or moving with the members passes any
+// other such grain: only the walls, the bed (frozen and settled grains) and, among the
+// members, the contacts the projection finds stop it.
+bool LocalStepper::passes(std::uint32_t j) const {
+  return !e_.model.suspension_contacts &&
+         (kind_[j] == GrainKind::coasting || kind_[j] == GrainKind::moving);
+}
+
+// A coasting grain's box, which nothing looks at when the free grains pass each other: then it
+// holds none (a million long boxes filled the registry's cells with a hundred bytes a grain).
+void LocalStepper::hold_coasting_box(std::uint32_t id, const Box& box) {
+  if (e_.model.suspension_contacts)
+    boxes_.set(id, box, box_tag(GrainKind::coasting));
+  else
+    boxes_.clear(id);
+}
+
+FreeFlight LocalStepper::flight_of(std::uint32_t id, const FreeFlight::Point& p) const {
+  const Particles& s = e_.sample.particles;
+  const double d = s.diameter[id], mass = e_.model.mass(d);
+  const double c = e_.drag.coefficient(d, s.weight[id], std::hypot(p.vx, p.vy), p.x, p.y);
+  FreeFlight f{p.x, p.y, p.vx, p.vy, 0, 0, 0};
+  const double force = e_.model.gravity_force(d);
+  if (c > 0) {
+    f.rate = c / mass;
+    f.uy = force / c;
+  } else {
+    f.uy = force / mass;
+  }
+  return f;
+}
+
+// The longest window (up to max_coast_s) over which grain id, at p at time t, can coast
+// without its box meeting another or a wall; with `commit`, takes it. False: none as long as
+// its own crossing time (and nothing was changed; `needed`, if given, is then the box of that
+// shortest window).
+bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit,
+                         Box* needed) {
+  const FreeFlight f = flight_of(id, p);
+  const double r = 0.5 * e_.sample.particles.diameter[id], pad = r * (1 + kSkin);
+  const double hw = e_.model.half_width;
+  double window = e_.setup.integrator.max_coast;
+  const double gap = std::hypot(f.vx - f.ux, f.vy - f.uy), terminal = std::hypot(f.ux, f.uy);
+  // Di Felice drag depends on the speed: far from its terminal velocity a grain's drag is
+  // taken again after a few response times, as the global step would.
+  if (e_.model.drag == DragLaw::di_felice && f.rate > 0 && gap > kConverged * terminal)
+    window = std::min(window, kResponses / f.rate);
+  auto box = [&](double w) {
+    const FreeFlight::Range g = f.sweep(w);
+    return Box{g.x0 - pad, g.x1 + pad, g.y0 - pad, g.y1 + pad};
+  };
+  auto take = [&](double w) {
+    if (!commit) return true;
+    flight_[id] = f;
+    t0_[id] = t;
+    t1_[id] = t + w;
+    kind_[id] = GrainKind::coasting;
+    if (e_.model.contact) hold_coasting_box(id, box(w));
+    syncs_.emplace_back(t + w, id);
+    std::push_heap(syncs_.begin(), syncs_.end(), kLater);
+    // Windows cut short (a grain synced early, engaged or retired) leave their entries behind
+    // until their time comes: past 1.25 times the grains, the stale ones go (the heap pops in the
+    // same order either way: entries compare by time, then id).
+    if (syncs_.size() > kind_.size() + kind_.size() / 4 + 1024) {
+      std::erase_if(syncs_, [&](const Sync& e) {
+        return kind_[e.second] != GrainKind::coasting || t1_[e.second] != e.first;
+      });
+      std::make_heap(syncs_.begin(), syncs_.end(), kLater);
+    }
+    ++e_.stats.windows;
+    return true;
+  };
+  if (!e_.model.contact) return take(window);
+
+  const double speed = f.rate > 0 ? std::max(std::hypot(f.vx, f.vy), terminal)
+                                  : std::hypot(f.vx, f.vy) + terminal * window;
+  // A window's box stays within a fraction of the mean spacing: long boxes would crowd the
+  // space the others need for theirs and engage grains that are nowhere near each other.
+  // Without suspension contacts the free grains do not look at it, and the window is
+  // bounded by the voidage grid instead: the drag is taken anew about once per cell crossed.
+  if (speed > 0) window = std::min(window, travel_ / speed);
+  const double shortest =
+      speed > 0 ? std::min(window, e_.setup.integrator.crossing_fraction * r / speed) : window;
+  near_.clear();
+  boxes_.overlapping(box(window), id, [&](std::uint32_t j) {
+    if (!passes(j)) near_.push_back(j);
+  });
+  for (double w = window; w >= shortest; w *= 0.5) {
+    const Box b = box(w);
+    if (b.x0 <= -hw || b.x1 >= hw || b.y0 <= 0) continue;
+    bool clear = true;
+    for (std::uint32_t j : near_)
+      if (b.overlaps(boxes_.box(j))) {
+        clear = false;
+        break;
+      }
+    if (clear) return take(w);
+  }
+  if (needed) *needed = box(shortest);
+  return false;
+}
+
+// Grain id, synced at t, found no window because its shortest box meets the boxes of coasting
+// grains. Those boxes hold the grains' whole windows, long for slow grains, though the grains
+// themselves may be far from id now: each of them is synced early, at t, which its exact
+// trajectory allows, and takes a new window once id holds its own. True: id coasts (the grains
+// that cannot are in failed_). False: something else is in the way (a member, a wall, a grain
+// already close), and nothing was changed.
+bool LocalStepper::make_room(std::uint32_t id, double t, const FreeFlight::Point& p) {
+  Box needed;
+  if (coast(id, t, p, false, &needed)) return false;  // not called for a grain that can coast
+  const double hw = e_.model.half_width;
+  if (needed.x0 <= -hw || needed.x1 >= hw || needed.y0 <= 0) return false;
+  const Particles& s = e_.sample.particles;
+  room_.clear();
+  bool movable = true;
+  boxes_.overlapping(needed, id, [&](std::uint32_t j) {
+    if (!movable) return;
+    if (kind_[j] != GrainKind::coasting || t0_[j] > t || t1_[j] <= t) {
+      movable = false;
+      return;
+    }
+    const FreeFlight::Point q = coasting_at(j, t);
+    const double pad = 0.5 * s.diameter[j] * (1 + kSkin);
+    movable = !needed.overlaps(Box{q.x - pad, q.x + pad, q.y - pad, q.y + pad});
+    room_.push_back({j, q, Box{}, 0.0});
+  });
+  if (!movable || room_.empty()) return false;
+  std::sort(room_.begin(), room_.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
+  for (Room& m : room_) {
+    m.before = boxes_.box(m.id);
+    m.t0 = t0_[m.id];
+    const double pad = 0.5 * s.diameter[m.id] * (1 + kSkin);
+    hold_coasting_box(m.id, Box{m.at.x - pad, m.at.x + pad, m.at.y - pad, m.at.y + pad});
+    t1_[m.id] = HUGE_VAL;  // its heap entry is stale
+  }
+  const Box before = boxes_.box(id);
+  const double t0_before = t0_[id];
+  const bool coasting = coast(id, t, p, true);
+  if (coasting) note_ahead(id, t, before, t0_before);
+  for (const Room& m : room_) {
+    e_.stats.particle_steps += 1;
+    if (m.at.y + 0.5 * s.diameter[m.id] < retire_height_) {
+      retire(m.id, t, m.at);
+      continue;
+    }
+    move_deposit(m.id, m.at.x, m.at.y);
+    if (coast(m.id, t, m.at, true)) {
+      note_ahead(m.id, t, m.before, m.t0);
+    } else {
+      // Joins the members at their time, on the window it had (still in flight_, from m.t0),
+      // with its old box, which holds its path from then on.
+      hold_coasting_box(m.id, m.before);
+      failed_.push_back(m.id);
+    }
+  }
+  return coasting;
+}
+
+// A grain synced at t, ahead of the members' time, with the box it had before: kept so that the
+// box can be widened should the members' step shrink below t.
+void LocalStepper::note_ahead(std::uint32_t id, double t, const Box& before, double t0_before) {
+  if (!e_.model.contact) return;
+  // Synced ahead twice within the step: its path from the members' time on lies in the box it
+  // had before the first of the two syncs and in the window between.
+  Box from = before;
+  const std::uint32_t slot = ahead_slot_[id];
+  if (slot < ahead_.size() && ahead_[slot].id == id && ahead_[slot].time == t0_before)
+    from = ahead_[slot].before.merged(before);
+  ahead_slot_[id] = std::uint32_t(ahead_.size());
+  ahead_.push_back({id, t, from, boxes_.box(id), false});
+}
+
+// A coasting grain at time t. Inside its window, exactly. Before it (a grain synced ahead of the
+// members within their step, joining them at their time), along the straight line of its
+// velocity at the window's start: run backwards, the exponential would amplify the tiny gap to
+// its terminal velocity by e^(dt/tau); that far back (less than a member step, so less than a
+// crossing time) the grain is at its terminal velocity to round-off.
+FreeFlight::Point LocalStepper::coasting_at(std::uint32_t id, double t) const {
+  const FreeFlight& f = flight_[id];
+  const double s = t - t0_[id];
+  if (s >= 0) return f.at(s);
+  return {f.x + s * f.vx, f.y + s * f.vy, f.vx, f.vy};
+}
+
+// A coasting grain whose box (its whole window) meets `reach` though the grain itself is clear
+// of it now: synced now, at the members' time, it may take a new window clear of `reach`.
+// True if it did (or retired); false: it is to join the members, and nothing was changed.
+bool LocalStepper::resync_clear_of(std::uint32_t j, const Box& reach) {
+  if (!e_.model.contact || t0_[j] > e_.time || t1_[j] <= e_.time) return false;
+  const FreeFlight::Point q = coasting_at(j, e_.time);
+  const double r = 0.5 * e_.sample.particles.diameter[j], pad = r * (1 + kSkin);
+  const Box disc{q.x - pad, q.x + pad, q.y - pad, q.y + pad};
+  if (disc.overlaps(reach)) return false;
+  if (q.y + r < retire_height_) {
+    retire(j, e_.time, q);
+    return true;
+  }
+  const Box old = boxes_.box(j);
+  hold_coasting_box(j, disc);
+  if (coast(j, e_.time, q, true)) {
+    e_.stats.particle_steps += 1;
+    move_deposit(j, q.x, q.y);
+    return true;
+  }
+  hold_coasting_box(j, old);
+  return false;
+}
+
+}  // namespace sedem

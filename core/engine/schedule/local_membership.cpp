@@ -1,0 +1,150 @@
+#include "core/engine/schedule/local_stepper.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace sedem {
+
+// Grain id joins the common step at p (at the members' time): appended to the state, its box
+// registered by wake_around.
+void LocalStepper::engage(std::uint32_t id, const FreeFlight::Point& p, bool frozen) {
+  if (is_member(kind_[id])) return;  // a member already
+  const Particles& s = e_.sample.particles;
+  const std::size_t k = e_.state.size();
+  e_.state.resize(k + 1);
+  e_.state.x[k] = p.x;
+  e_.state.y[k] = p.y;
+  e_.state.vx[k] = frozen ? 0.0 : p.vx;
+  e_.state.vy[k] = frozen ? 0.0 : p.vy;
+  e_.state.omega[k] = 0;
+  e_.state.diameter[k] = s.diameter[id];
+  e_.state.weight[k] = s.weight[id];
+  e_.state.origin[k] = id;
+  e_.state.frozen[k] = frozen ? 1 : 0;
+  const double reach = e_.model.lubrication_reach();
+  e_.lists.search.push_back(0.5 * s.diameter[id] * (1 + reach + e_.model.skin + e_.lists.margin));
+  e_.lists.x0.push_back(p.x);
+  e_.lists.y0.push_back(p.y);
+  e_.forces.stiffness.push_back(0.0);
+  member_[id] = std::uint32_t(k);
+  kind_[id] = frozen ? GrainKind::frozen : GrainKind::moving;
+  move_deposit(id, p.x, p.y);
+  members_changed_ = true;
+  ++e_.stats.engaged;
+  wake_.push_back(id);
+}
+
+// Registers the boxes of the grains just engaged; whatever a moving one's box overlaps joins
+// too (coasting grains where they are now, settled ones frozen), until nothing more does.
+void LocalStepper::wake_around(std::uint32_t first) {
+  if (first != kNoMember) wake_.push_back(first);
+  std::vector<std::uint32_t>& found = found_;
+  while (!wake_.empty()) {
+    const std::uint32_t id = wake_.back();
+    wake_.pop_back();
+    const std::size_t k = member_[id];
+    anchor(k);
+    if (e_.state.frozen[k]) continue;
+    found.clear();
+    boxes_.overlapping(boxes_.box(id), id, [&](std::uint32_t j) {
+      if ((kind_[j] == GrainKind::coasting && !passes(j)) || kind_[j] == GrainKind::settled)
+        found.push_back(j);
+    });
+    std::sort(found.begin(), found.end());
+    const Box reach = boxes_.box(id);
+    for (std::uint32_t j : found) {
+      if (kind_[j] == GrainKind::coasting) {
+        if (!resync_clear_of(j, reach)) engage(j, coasting_at(j, e_.time), false);
+      } else {
+        const FreeFlight& f = flight_[j];
+        --settled_;
+        engage(j, FreeFlight::Point{f.x, f.y, 0, 0}, true);
+      }
+    }
+  }
+}
+
+void LocalStepper::anchor(std::size_t k) {
+  const std::uint32_t id = e_.state.origin[k];
+  flight_[id].x = e_.state.x[k];
+  flight_[id].y = e_.state.y[k];
+  if (e_.model.contact)
+    boxes_.set(id, member_box(k),
+               box_tag(e_.state.frozen[k] ? GrainKind::frozen : GrainKind::moving));
+}
+
+Box LocalStepper::member_box(std::size_t k) const {
+  const double r = 0.5 * e_.state.diameter[k];
+  const double reach = r * (1 + kSkin) + (e_.state.frozen[k] ? 0.0 : kAllowance * r);
+  return Box{e_.state.x[k] - reach, e_.state.x[k] + reach, e_.state.y[k] - reach,
+             e_.state.y[k] + reach};
+}
+
+void LocalStepper::remove_member(std::size_t k) {
+  const std::size_t last = e_.state.size() - 1;
+  if (k != last) {
+    for (auto* v :
+         {&e_.state.x, &e_.state.y, &e_.state.vx, &e_.state.vy, &e_.state.omega, &e_.state.diameter,
+          &e_.state.weight, &e_.lists.search, &e_.lists.x0, &e_.lists.y0, &e_.forces.stiffness})
+      (*v)[k] = (*v)[last];
+    e_.state.origin[k] = e_.state.origin[last];
+    e_.state.frozen[k] = e_.state.frozen[last];
+    member_[e_.state.origin[k]] = std::uint32_t(k);
+  }
+  e_.state.resize(last);
+  e_.lists.search.resize(last);
+  e_.lists.x0.resize(last);
+  e_.lists.y0.resize(last);
+  e_.forces.stiffness.resize(last);
+  members_changed_ = true;
+}
+
+// Moving members that touch nothing coast again where a window fits.
+void LocalStepper::release_members() {
+  std::vector<std::uint32_t> free;
+  for (std::size_t k = 0; k < e_.state.size(); ++k)
+    if (!e_.state.frozen[k] && e_.forces.stiffness[k] == 0) free.push_back(e_.state.origin[k]);
+  std::sort(free.begin(), free.end());
+  for (std::uint32_t id : free) {
+    const std::size_t k = member_[id];
+    const FreeFlight::Point p{e_.state.x[k], e_.state.y[k], e_.state.vx[k], e_.state.vy[k]};
+    // A window of one crossing time is enough: requiring four cut the churn of grains leaving
+    // and rejoining, but kept settling grains on the common step and let a spreading pile's
+    // overlaps reach 0.7 of a radius (DensePileHasNoDeepOverlap).
+    if (!coast(id, e_.time, p, true)) continue;
+    remove_member(k);
+    member_[id] = kNoMember;
+    ++e_.stats.released;
+  }
+}
+
+// Frozen members that no moving member can reach go back to the bed, out of the state.
+void LocalStepper::settle_members() {
+  std::vector<std::uint32_t> frozen;
+  for (std::size_t k = 0; k < e_.state.size(); ++k)
+    if (e_.state.frozen[k]) {
+      anchor(k);
+      frozen.push_back(e_.state.origin[k]);
+    }
+  std::sort(frozen.begin(), frozen.end());
+  for (std::uint32_t id : frozen) {
+    bool reachable = false;
+    boxes_.overlapping(boxes_.box(id), id, [&](std::uint32_t j) {
+      reachable = reachable || kind_[j] == GrainKind::moving;
+    });
+    if (reachable) continue;
+    const std::size_t k = member_[id];
+    flight_[id] = FreeFlight{e_.state.x[k], e_.state.y[k], 0, 0, 0, 0, 0};
+    kind_[id] = GrainKind::settled;
+    ++settled_;
+    boxes_.set(id, boxes_.box(id), box_tag(GrainKind::settled));
+    remove_member(k);
+    member_[id] = kNoMember;
+  }
+}
+
+void LocalStepper::index_members() {
+  for (std::size_t k = 0; k < e_.state.size(); ++k) member_[e_.state.origin[k]] = std::uint32_t(k);
+}
+
+}  // namespace sedem

@@ -1,0 +1,252 @@
+#include "core/engine/schedule/local_stepper.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/engine/instability.h"
+
+namespace sedem {
+
+LocalStepper::LocalStepper(EngineParts& parts) : e_(parts) {
+  // Below the lowest instrument nothing rises back into any instrument's reach: a grain that
+  // falls there can leave the dynamics (only where some instrument reads).
+  if (e_.model.contact && e_.setup.integrator.retire_below && e_.setup.instruments_read)
+    retire_height_ = std::max(0.0, e_.setup.lowest_measured_height);
+  const Particles& s = e_.sample.particles;
+  const std::size_t n = s.size();
+  kind_.assign(n, GrainKind::coasting);
+  flight_.assign(n, FreeFlight{});
+  t0_.assign(n, 0.0);
+  t1_.assign(n, 0.0);
+  member_.assign(n, kNoMember);
+  deposit_cell_.assign(n, 0);
+  syncs_.clear();
+  const Cylinder& cyl = e_.setup.cylinder;
+  double dmax = 0;
+  for (double d : s.diameter) dmax = std::max(dmax, d);
+  // Cells about twice the mean spacing: a box spans a few of them and each holds a few boxes.
+  const double spacing =
+      std::sqrt(2 * cyl.half_width() * cyl.height / double(std::max<std::size_t>(n, 1)));
+  travel_ = e_.model.suspension_contacts
+                ? kTravel * spacing
+                : std::max(kTravel * spacing, e_.setup.forces.voidage_cell);
+  registry_cell_ = std::max(spacing, 4 * dmax);
+  land_y_.assign(n, 0.0);
+  ahead_slot_.assign(n, kNoMember);
+  widened_.clear();
+  bed_column_ = std::max(dmax, 1e-9);
+  bed_.assign(std::max<std::size_t>(1, std::size_t(std::ceil(2 * cyl.half_width() / bed_column_))),
+              0.0);
+  e_.stats.retired = 0;
+  if (e_.model.contact) boxes_.configure(registry_cell_, cyl.half_width(), cyl.height, n);
+  if (e_.model.drag == DragLaw::di_felice) {
+    e_.voidage.compute(n, e_.state.x.data(), e_.state.y.data(), e_.state.diameter.data(),
+                       e_.state.weight.data());
+    for (std::uint32_t id = 0; id < n; ++id)
+      deposit_cell_[id] = std::uint32_t(e_.voidage.cell(e_.state.x[id], e_.state.y[id]));
+  }
+  // Every grain first holds its disc, as if settled, so that the first windows see them all.
+  std::vector<FreeFlight::Point> start(n);
+  for (std::uint32_t id = 0; id < n; ++id) {
+    start[id] = {e_.state.x[id], e_.state.y[id], e_.state.vx[id], e_.state.vy[id]};
+    flight_[id] = FreeFlight{start[id].x, start[id].y, start[id].vx, start[id].vy, 0, 0, 0};
+    const double pad = 0.5 * s.diameter[id] * (1 + kSkin);
+    if (e_.model.contact)
+      hold_coasting_box(
+          id, Box{start[id].x - pad, start[id].x + pad, start[id].y - pad, start[id].y + pad});
+  }
+  // The state holds the members only, a few thousand at most: the room it had for every
+  // grain (a sixth of the memory at a million particles) goes back.
+  e_.state = EngineState{};
+  e_.forces = ForceAccumulators{};
+  std::vector<double>().swap(e_.lists.search);
+  std::vector<double>().swap(e_.lists.x0);
+  std::vector<double>().swap(e_.lists.y0);
+  for (std::uint32_t id = 0; id < n; ++id)
+    if (start[id].y + 0.5 * s.diameter[id] < retire_height_) retire(id, 0.0, start[id]);
+  for (std::uint32_t id = 0; id < n; ++id) {
+    if (kind_[id] != GrainKind::coasting) continue;  // engaged by a neighbour already, or retired
+    if (coast(id, 0.0, start[id], true)) continue;
+    engage(id, start[id], false);
+    wake_around(kNoMember);
+  }
+  index_members();
+  e_.lists.stale = true;
+  members_changed_ = false;
+  e_.integrator->refresh_step(e_.state);
+  e_.stats.members = e_.state.size();
+}
+
+void LocalStepper::step(double limit) {
+  auto count_moving = [&] {
+    std::size_t m = 0;
+    for (std::uint8_t f : e_.state.frozen) m += f == 0;
+    return m;
+  };
+  std::size_t moving = count_moving();
+  double dt = moving ? e_.integrator->next_step(e_.facts) : e_.setup.integrator.max_step;
+  double target = e_.time + dt >= limit ? limit : e_.time + dt;
+  // Syncs due within the step, in time order. A grain that cannot coast on joins the members
+  // at their time, before they step, where its last window put it then (coasting_at). So no
+  // member step is cut short by a sync (steps of a few ns would turn the projection's
+  // corrections into runaway speeds).
+  ahead_.clear();
+  for (;;) {
+    failed_.clear();
+    while (!syncs_.empty() && syncs_.front().first <= target) {
+      const auto [t, id] = syncs_.front();
+      std::pop_heap(syncs_.begin(), syncs_.end(), kLater);
+      syncs_.pop_back();
+      if (kind_[id] != GrainKind::coasting || t1_[id] != t) continue;  // engaged since: stale
+      const FreeFlight::Point p = flight_[id].at(t - t0_[id]);
+      if (!std::isfinite(p.x + p.y + p.vx + p.vy))
+        throw InstabilityError(e_.sample.particles.id[id], t, "position", p.x);
+      e_.stats.particle_steps += 1;
+      if (p.y + 0.5 * e_.sample.particles.diameter[id] < retire_height_) {
+        retire(id, t, p);
+        continue;
+      }
+      move_deposit(id, p.x, p.y);
+      const Box before = e_.model.contact ? boxes_.box(id) : Box{};
+      const double t0_before = t0_[id];
+      if (coast(id, t, p, true)) {
+        note_ahead(id, t, before, t0_before);
+        continue;
+      }
+      if (e_.model.contact && make_room(id, t, p)) {
+        if (failed_.empty()) continue;
+        break;  // a grain it moved could not coast: the members' step is chosen again with it
+      }
+      t1_[id] = HUGE_VAL;  // its heap entry, if any, is stale
+      failed_.push_back(id);
+      break;  // the members' step is chosen again with it
+    }
+    if (failed_.empty()) break;
+    // The members' step may shrink now, below the time of grains already synced within it:
+    // their box covers their path from the members' time on, the old window's part included,
+    // until their next sync. (Taken before the new members' boxes look for what they reach.)
+    for (Ahead& a : ahead_) {
+      if (a.widened || kind_[a.id] != GrainKind::coasting || t0_[a.id] != a.time) continue;
+      hold_coasting_box(a.id, a.after.merged(a.before));
+      a.widened = true;
+    }
+    for (std::uint32_t id : failed_)
+      if (kind_[id] == GrainKind::coasting) engage(id, coasting_at(id, e_.time), false);
+    wake_around(kNoMember);
+    e_.lists.stale = true;
+    index_members();
+    e_.integrator->refresh_step(e_.state);
+    members_changed_ = false;
+    moving = count_moving();
+    dt = moving ? e_.integrator->next_step(e_.facts) : e_.setup.integrator.max_step;
+    target = e_.time + dt >= limit ? limit : e_.time + dt;
+    // Syncs still due before the new target are taken in the next round: no window may end
+    // unlooked-at while the members step past it.
+  }
+  // Those synced within the step after all need their new box only; the others once the
+  // members have passed their sync (until then a grain synced after them may be where their
+  // old box was, which is what the widened boxes allow).
+  for (const Ahead& a : ahead_)
+    if (a.widened && kind_[a.id] == GrainKind::coasting && t0_[a.id] == a.time) {
+      if (a.time <= target)
+        hold_coasting_box(a.id, a.after);
+      else
+        widened_.push_back(a);
+    }
+
+  if (moving && target > e_.time) {
+    if (e_.lists.stale) {
+      e_.resort_and_rebuild_lists();
+      index_members();
+    }
+    Blowup blowup;
+    e_.integrator->advance(e_.state, e_.forces, target - e_.time, blowup);
+    e_.integrator->contact_facts(e_.facts);
+    e_.stats.particle_steps += double(moving);
+    e_.stats.contacts = e_.facts.contacts;
+    e_.stats.max_overlap_ratio = std::max(e_.stats.max_overlap_ratio, e_.facts.max_overlap_ratio);
+    if (blowup.found) e_.throw_blowup(blowup, target);
+    e_.lists.stale = e_.lists.stale || e_.lists.moved_beyond_margin(e_.state);
+    for (std::size_t k = 0; k < e_.state.size(); ++k)
+      if (!e_.state.frozen[k]) move_deposit(e_.state.origin[k], e_.state.x[k], e_.state.y[k]);
+  }
+  e_.stats.last_step = target - e_.time;
+  e_.time = target;
+  e_.stats.steps += 1;
+  if (!widened_.empty()) {
+    std::size_t kept = 0;
+    for (const Ahead& a : widened_) {
+      if (kind_[a.id] != GrainKind::coasting || t0_[a.id] != a.time)
+        continue;  // synced again since
+      if (a.time <= e_.time)
+        hold_coasting_box(a.id, a.after);
+      else
+        widened_[kept++] = a;
+    }
+    widened_.resize(kept);
+  }
+
+  if (moving) {
+    // Which members touch something, from this step's projection, before any joins or leaves.
+    if (e_.stats.steps % kReleaseEvery == 0) e_.integrator->mark_touching(e_.forces.stiffness);
+    if (retire_height_ > 0) retire_members();
+    // Members that used their allowance take a new box; whatever it reaches joins them.
+    for (std::size_t k = 0; k < e_.state.size(); ++k) {
+      if (e_.state.frozen[k]) continue;
+      const std::uint32_t id = e_.state.origin[k];
+      const double moved = std::hypot(e_.state.x[k] - flight_[id].x, e_.state.y[k] - flight_[id].y);
+      if (moved > kReanchor * 0.5 * e_.state.diameter[k]) wake_.push_back(id);
+    }
+    wake_around(kNoMember);
+    if (e_.freeze.due(e_.stats.steps)) {
+      e_.freeze.run(e_.state, e_.forces.stiffness, e_.model, e_.setup.fluid);
+      settle_members();
+      e_.stats.frozen = settled_;
+      for (std::uint8_t f : e_.state.frozen) e_.stats.frozen += f;
+    }
+    if (e_.stats.steps % kReleaseEvery == 0) release_members();
+  }
+  if (members_changed_) {
+    e_.lists.stale = true;
+    index_members();
+    e_.integrator->refresh_step(e_.state);
+    members_changed_ = false;
+  }
+  e_.stats.members = e_.state.size();
+}
+
+void LocalStepper::move_deposit(std::uint32_t id, double x, double y) {
+  if (e_.model.drag != DragLaw::di_felice) return;
+  const std::size_t c = e_.voidage.cell(x, y);
+  if (c == deposit_cell_[id]) return;
+  const double d = e_.sample.particles.diameter[id];
+  const double volume = e_.sample.particles.weight[id] * e_.model.volume(d);
+  e_.voidage.deposit(deposit_cell_[id], -volume);
+  e_.voidage.deposit(c, volume);
+  deposit_cell_[id] = std::uint32_t(c);
+}
+
+void LocalStepper::write_free_grains(Particles& p) const {
+  for (std::uint32_t id = 0; id < kind_.size(); ++id) {
+    if (is_member(kind_[id])) continue;
+    const FreeFlight::Point q = kind_[id] == GrainKind::coasting ? coasting_at(id, e_.time)
+                                : kind_[id] == GrainKind::retired
+                                    ? retired_at(id, e_.time)
+                                    : FreeFlight::Point{flight_[id].x, flight_[id].y, 0, 0};
+    p.x[id] = q.x;
+    p.y[id] = q.y;
+    p.vx[id] = q.vx;
+    p.vy[id] = q.vy;
+    p.omega[id] = 0;
+  }
+}
+
+std::size_t LocalStepper::bytes() const {
+  auto cap = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+  return cap(kind_) + cap(flight_) + cap(t0_) + cap(t1_) + cap(member_) + cap(deposit_cell_) +
+         cap(syncs_) + cap(near_) + cap(wake_) + boxes_.bytes() + cap(land_y_) + cap(bed_) +
+         cap(ahead_slot_) + cap(ahead_) + cap(widened_);
+}
+
+}  // namespace sedem

@@ -1,0 +1,162 @@
+#pragma once
+
+// Local time stepping of the exponential integrator (integrator.local_steps).
+//
+// A grain that touches nothing moves on an exact trajectory (free_flight.h): weight, buoyancy
+// and a drag held constant. The common step exists only so that no grain passes through
+// another between two looks. So a grain that provably cannot reach any other grain, wall or
+// the bed for a while need not share it: it *coasts* over a window of its own, evaluated
+// exactly at any time inside it, and is looked at again only at the window's end (its
+// *sync*), where its drag and the voidage it feels are taken anew.
+//
+// Proof that nothing is missed: every grain holds a box in a BoxRegistry that it cannot leave
+// before it is looked at again — a coasting grain the box its trajectory sweeps over its
+// window, a member of the common step its position with an allowance of kAllowance radii
+// (re-anchored once it has used kReanchor of them; it moves at most crossing_fraction < 1 radius
+// a step), a settled grain its disc — each widened by (1 + kSkin) radii. A window is chosen so
+// that its box overlaps no other box and no wall; the longest such window up to
+// integrator.max_coast_s, halved until it fits. A grain that cannot coast even over its own
+// crossing time joins the common step (it is *engaged*), and whatever its box then overlaps
+// joins with it: coasting grains at their exact position now, settled ones as frozen members.
+// Members that touch nothing leave again as soon as a window fits (checked every
+// kReleaseEvery steps); frozen members that no moving member can reach go back to the bed.
+//
+// The common step is the exponential integrator's, unchanged, over the members only: contacts,
+// the bed and freezing are exactly those of the global scheme. Syncs are taken in time order
+// from a heap; a step of the members ends early at a sync that engages, so that every grain
+// joins the common step at the members' time. The voidage grid is kept up to date grain by
+// grain (each sync or member step moves the grain's deposit when it changes cell), instead of
+// being computed anew each step. The scheme is serial: its work is in syncs of O(log n) each,
+// taken in one order, so a run is the same whatever the thread count.
+//
+// Below the lowest instrument (integrator.retire_below_instruments) a grain *retires*: nothing
+// there can rise back into an instrument's reach, so it leaves the dynamics and falls freely
+// onto a coarse bed (columns one largest grain wide, each raised by the area of the grains
+// that land in it at a packing of kBedPacking), where it is drawn without contacts.
+//
+// The stepper is split by job: local_stepper.cpp (start, the step, the voidage deposits),
+// local_coasting.cpp (windows and syncs), local_membership.cpp (engage, release, settle),
+// local_retirement.cpp (the coarse bed), local_checkpoint.cpp (its state in checkpoints, and
+// the scheme's promise checked for tests).
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <iosfwd>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/engine/contact/box_registry.h"
+#include "core/engine/integrate/free_flight.h"
+#include "core/engine/schedule/engine_parts.h"
+#include "core/engine/schedule/grain_kind.h"
+#include "core/model/particles.h"
+
+namespace sedem {
+
+class LocalStepper {
+ public:
+  // Every grain starts coasting where a window fits; the others engage.
+  explicit LocalStepper(EngineParts& parts);
+  // One step of the members (the last one shortened to land on `limit`), with every sync due
+  // before its end.
+  void step(double limit);
+
+  // The grains the state does not hold (coasting, settled, retired), at the engine's time, into
+  // the sample's order.
+  void write_free_grains(Particles& p) const;
+  // Below this height grains leave the dynamics for the coarse bed (0: none).
+  double retire_height() const { return retire_height_; }
+  // The first broken promise of the scheme, or "" (local_checkpoint.cpp).
+  std::string violation() const;
+  void save(std::ostream& out) const;
+  void load(std::istream& in);
+  std::size_t bytes() const;
+
+ private:
+  // Boxes are widened by (1 + kSkin) radii.
+  static constexpr double kSkin = 0.5;
+  // A member's box lets it travel kAllowance radii, and moves with it once it has travelled
+  // kReanchor.
+  static constexpr double kAllowance = 3.0;
+  static constexpr double kReanchor = 1.0;
+  // Relative gap to the terminal velocity of a long window.
+  static constexpr double kConverged = 1e-3;
+  // Response times of a window still converging.
+  static constexpr double kResponses = 8.0;
+  // Longest travel of a window, in mean spacings.
+  static constexpr double kTravel = 0.5;
+  // Steps between two looks for members that touch nothing (to release them).
+  static constexpr std::int64_t kReleaseEvery = 16;
+  // Area fraction of the coarse bed (discs packed at random).
+  static constexpr double kBedPacking = 0.8;
+  static constexpr std::uint32_t kNoMember = 0xFFFFFFFF;
+  using Sync = std::pair<double, std::uint32_t>;
+  static constexpr auto kLater = std::greater<Sync>{};
+
+  // Coasting and syncs (local_coasting.cpp).
+  bool coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit,
+             Box* needed = nullptr);
+  bool make_room(std::uint32_t id, double t, const FreeFlight::Point& p);
+  void note_ahead(std::uint32_t id, double t, const Box& before, double t0_before);
+  bool resync_clear_of(std::uint32_t id, const Box& reach);
+  bool passes(std::uint32_t j) const;
+  void hold_coasting_box(std::uint32_t id, const Box& box);
+  FreeFlight flight_of(std::uint32_t id, const FreeFlight::Point& p) const;
+  FreeFlight::Point coasting_at(std::uint32_t id, double t) const;
+  // Membership of the common step (local_membership.cpp).
+  void engage(std::uint32_t id, const FreeFlight::Point& p, bool frozen);
+  void wake_around(std::uint32_t id);
+  void anchor(std::size_t k);
+  void remove_member(std::size_t k);
+  void release_members();
+  void settle_members();
+  void index_members();
+  Box member_box(std::size_t k) const;
+  // The coarse bed (local_retirement.cpp).
+  void retire(std::uint32_t id, double t, const FreeFlight::Point& p);
+  void retire_members();
+  FreeFlight::Point retired_at(std::uint32_t id, double t) const;
+  // The voidage grid, kept up to date grain by grain (local_stepper.cpp).
+  void move_deposit(std::uint32_t id, double x, double y);
+
+  EngineParts& e_;
+  // Each grain is coasting (on its exact free trajectory `flight_` from t0_ until t1_), a
+  // member of the common step (in the state, at index member_), or settled (a frozen grain no
+  // member can reach, kept out of the state), or retired (below every instrument, falling on
+  // flight_ from t0_ onto the coarse bed, to rest at (t1_, land_y_)). See GrainKind.
+  bool members_changed_ = false;
+  std::vector<GrainKind> kind_;
+  std::vector<FreeFlight> flight_;  // coasting: from t0_; members: anchor of their box in x, y
+  std::vector<double> t0_, t1_;
+  std::vector<std::uint32_t> member_, deposit_cell_;
+  std::vector<Sync> syncs_;  // min-heap of (t1_, id)
+  BoxRegistry boxes_;
+  std::vector<std::uint32_t> near_, wake_, failed_;  // scratch
+  struct Ahead {
+    std::uint32_t id;
+    double time;
+    Box before, after;
+    bool widened;
+  };
+  std::vector<Ahead> ahead_;               // synced within this step, with the box they had
+  std::vector<std::uint32_t> ahead_slot_;  // per grain: its latest entry in ahead_
+  std::vector<Ahead> widened_;  // synced ahead of a shortened step: boxes to narrow later
+  struct Room {
+    std::uint32_t id;
+    FreeFlight::Point at;  // where it is at the sync that moves it
+    Box before;            // its box until then
+    double t0;             // its window's start until then
+  };
+  std::vector<Room> room_;            // scratch of make_room
+  std::vector<std::uint32_t> found_;  // scratch of wake_around
+  double registry_cell_ = 1e-3, travel_ = 1e-3;
+  std::size_t settled_ = 0;
+  double retire_height_ = 0;    // 0: no grain retires
+  std::vector<double> land_y_;  // retired grains: the height of their centre on the bed
+  std::vector<double> bed_;     // the coarse bed: the height of each column's top
+  double bed_column_ = 1e-4;    // the columns' width
+};
+
+}  // namespace sedem
