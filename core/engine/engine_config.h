@@ -5,8 +5,6 @@
 
 namespace sedem {
 
-class Schema;
-
 // Which forces act (Sect. 3, 4.2). Each can be switched off in a scene.
 struct ForcesConfig {
   bool weight = true;
@@ -46,7 +44,7 @@ struct IntegratorConfig {
 enum class IntegratorMethod { explicit_euler, exponential };
 IntegratorMethod integrator_method(const IntegratorConfig& config);
 
-void describe(ForcesConfig& config, Schema& schema);
-void describe(IntegratorConfig& config, Schema& schema);
+// The name the explicit integrator had before (scenes and run records may still say it).
+inline constexpr const char* kFormerExplicitName = "reference";
 
 }  // namespace sedem

@@ -79,7 +79,11 @@ void assign(const Param& p, const toml::node& node, const std::string& at) {
           if (!p.choices.empty() &&
               std::find(p.choices.begin(), p.choices.end(), *s) == p.choices.end()) {
             std::string allowed;
-            for (const auto& c : p.choices) allowed += (allowed.empty() ? "" : ", ") + c;
+            for (const auto& c : p.choices) {
+              const bool former = std::any_of(p.aliases.begin(), p.aliases.end(),
+                                              [&](const auto& a) { return a.first == c; });
+              if (!former) allowed += (allowed.empty() ? "" : ", ") + c;
+            }
             throw SceneError(at + ": " + p.key + " = " + shown + " is not one of: " + allowed);
           }
           *target = *s;
@@ -131,7 +135,7 @@ void apply_override(const Schema& schema, const std::string& assignment, Layer& 
     throw SceneError("--set: unknown key '" + key + "'; did you mean '" + schema.nearest(key) +
                      "'?");
   // A value is read as TOML; a bare word that is not valid TOML is taken as a string, so
-  // that --set integrator.method=reference needs no quotes.
+  // that --set integrator.method=explicit needs no quotes.
   toml::table parsed;
   try {
     parsed = toml::parse("v = " + value);

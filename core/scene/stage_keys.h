@@ -12,5 +12,7 @@ namespace sedem {
 
 void describe(SampleConfig& config, Schema& schema);
 void describe(InstrumentsConfig& config, Schema& schema);
+void describe(ForcesConfig& config, Schema& schema);
+void describe(IntegratorConfig& config, Schema& schema);
 
 }  // namespace sedem

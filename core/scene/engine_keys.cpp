@@ -1,0 +1,75 @@
+#include "core/scene/stage_keys.h"
+
+namespace sedem {
+
+void describe(ForcesConfig& c, Schema& s) {
+  s.flag("forces.weight", &c.weight, "Gravity on every particle.");
+  s.flag("forces.buoyancy", &c.buoyancy, "Hydrostatic force of the fluid on every particle.");
+  s.choice("forces.drag", &c.drag, {"di_felice", "stokes", "off"},
+           "Drag law: Di Felice with local voidage (Eqs. 7-9), plain Stokes (Eq. 11), or none.");
+  s.flag("forces.contact", &c.contact, "Penalty contact between particles and with the walls.");
+  s.flag("forces.suspension_contacts", &c.suspension_contacts,
+         "false: grains in the suspension pass each other and meet only the walls (needs "
+         "local steps and retirement below the instruments, so that the bed is the coarse "
+         "one). Each simulated grain stands for many real ones spread through the slab, so "
+         "its collisions in the section grow with the simulated count; the voidage of the "
+         "drag carries the suspension's hindrance. See docs/engine.md.");
+  s.number("forces.stiffness_normal", &c.stiffness_normal, "N/m", 1, 1e-6, 1e9,
+           "K_N, normal penalty spring (paper: 1e3).");
+  s.number("forces.stiffness_tangential", &c.stiffness_tangential, "N/m", 1, 1e-6, 1e9,
+           "K_T, tangential penalty spring (paper: 1e3).");
+  s.number("forces.friction", &c.friction, "", 1, 0, 10, "Coulomb friction coefficient mu_c.");
+  s.flag("forces.lubrication", &c.lubrication,
+         "Squeeze-film repulsion between close pairs (Eq. 10).");
+  s.number("forces.lubrication_intensity", &c.lubrication_intensity, "", 1, 0, 1e6,
+           "Intensity of Eq. 10 (paper: 10).");
+  s.number("forces.lubrication_range", &c.lubrication_range, "", 1, 1e-3, 1e6,
+           "Range of Eq. 10, in inverse particle radii (paper: 10).");
+  s.number("forces.voidage_cell_mm", &c.voidage_cell, "mm", 1e-3, 1e-3, 1e3,
+           "Side of the square cells in which the local voidage of the drag is computed.")
+      .min_exclusive = true;
+  s.number("forces.min_voidage", &c.min_voidage, "", 1, 0.01, 1,
+           "Floor on the grid's voidage, where statistical weights pack more than a bed.");
+  s.flag("forces.voidage_excludes_self", &c.voidage_excludes_self,
+         "The voidage a grain's drag feels leaves out the grain's own statistical weight, which "
+         "with few heavily weighted particles would pack its cell on its own.");
+}
+
+void describe(IntegratorConfig& c, Schema& s) {
+  s.choice("integrator.method", &c.method, {"explicit", "exponential"},
+           "explicit: symplectic Euler, the paper's step rule (its former name, reference, is "
+           "still read); exponential: exact drag update, large stable steps.");
+  s.alias("integrator.method", kFormerExplicitName, "explicit");
+  s.number("integrator.step_factor", &c.step_factor, "", 1, 1e-6, 1e9,
+           "Time step as a multiple of the smallest response time t_tr (paper: 0.1).");
+  s.flag("integrator.adaptive", &c.adaptive,
+         "explicit: grow the step once every particle is at terminal velocity (Sect. 4.6).");
+  s.number("integrator.fast_step_factor", &c.fast_step_factor, "", 1, 1e-6, 1e9,
+           "exponential: upper bound on the step as a multiple of the smallest response time "
+           "t_tr.");
+  s.number("integrator.crossing_fraction", &c.crossing_fraction, "", 1, 0, 1,
+           "exponential: the step lets no moving grain travel more than this fraction of its "
+           "radius, so none passes through another.")
+      .min_exclusive = true;
+  s.flag("integrator.freeze_settled", &c.freeze_settled,
+         "Freeze particles resting in the bed below the lowest instrument.");
+  s.number("integrator.max_step_s", &c.max_step, "s", 1, 1e-12, 1e6, "Upper bound on the step.");
+  s.flag("integrator.local_steps", &c.local_steps,
+         "exponential: a grain that can touch nothing follows its exact free trajectory over a "
+         "window of its own (space-time boxes keep windows apart), and only grains near a "
+         "contact, a wall or the bed share the common step. Off: every grain takes the common "
+         "step.");
+  s.flag("integrator.retire_below_instruments", &c.retire_below,
+         "exponential with local_steps and at least one instrument: a grain that falls below "
+         "the lowest instrument (less 1 cm) leaves the simulation and falls freely onto a coarse "
+         "bed (columns one largest grain wide, packed at 0.8, each grain in the lowest of the five "
+         "nearest), where it is drawn without "
+         "contacts. No reading can change: nothing there rises back to an instrument.");
+  s.number("integrator.max_coast_s", &c.max_coast, "s", 1, 1e-6, 1e6,
+           "exponential with local_steps: the longest window a free grain coasts with its drag "
+           "(and the voidage it feels) held constant.")
+      .min_exclusive = true;
+  s.integer("integrator.threads", &c.threads, 0, 1024, "Worker threads; 0 uses every core.");
+}
+
+}  // namespace sedem
