@@ -196,7 +196,8 @@ int main(int argc, char** argv) {
   auto* bench_cmd = cli.add_subcommand(
       "bench",
       "Run a benchmark: engine (throughput, memory, stability), accuracy (run time "
-      "against error for every sample), speedup (fast against reference integrator, side by "
+      "against error for every sample), speedup (the exponential against the explicit integrator, "
+      "side by "
       "side) or scale (the whole test of every sample against particle count); arguments "
       "after -- go to it");
   bench_cmd->add_option("which", bench_options.which, "engine, accuracy, speedup or scale")

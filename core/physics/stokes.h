@@ -6,7 +6,7 @@ namespace sedem::stokes {
 
 // The simple sedimentation model of Sect. 4.3 (Eqs. 11-14, 16): one sphere, Stokes drag,
 // weight and buoyancy, no neighbours. It is what the laboratory tests assume, what sets the
-// reference integrator's step, and the Re -> 0, dilute limit the engine must reproduce.
+// explicit integrator's step, and the Re -> 0, dilute limit the engine must reproduce.
 
 // Eq. 13 right: u_tr = (rho_p - rho_f) g phi^2 / (18 mu), m/s (downwards).
 double terminal_velocity(double diameter, double particle_density, const Fluid& fluid);
