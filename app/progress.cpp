@@ -133,11 +133,14 @@ std::string run_summary(const nlohmann::json& results, double wall_time,
       if (!results.contains(test)) continue;
       const auto& r = results[test];
       const int readings = r.value("readings", 0);
-      if (readings == 0)
-        text += format("  %-12s %12s %12s %9d\n", test, "-", "-", 0);
-      else
-        text += format("  %-12s %12.2f %12.2f %9d\n", test, r.value("error_pp", 0.0),
-                       r.value("bias_pp", 0.0), readings);
+      // A figure that is absent (no reading; null: a reading that is no number) shows as "-".
+      auto shown = [&](const char* key) {
+        const auto v = r.value(key, nlohmann::json());
+        return readings > 0 && v.is_number() ? format("%12.2f", v.get<double>())
+                                             : format("%12s", "-");
+      };
+      text += format("  %-12s %s %s %9d\n", test, shown("error_pp").c_str(),
+                     shown("bias_pp").c_str(), readings);
     }
     text +=
         "  (percentage points of percent finer; error: the test from the DEM against the\n"

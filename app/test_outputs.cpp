@@ -28,7 +28,9 @@ nlohmann::json results_json(const TestResults& results) {
     nlohmann::json r = {{"error_pp", figure(t.error)},
                         {"bias_pp", figure(t.bias)},
                         {"readings", t.dem.rows.size()}};
-    if (!std::isfinite(t.error) || !std::isfinite(t.bias))
+    if (t.dem.rows.empty())
+      r["note"] = "no readings: the run ended before the test's first reading time";
+    else if (!std::isfinite(t.error) || !std::isfinite(t.bias))
       r["note"] = "cannot be computed: a reading of the test or of its reference is not a number";
     if (t.test == "hydrometer") {
       std::size_t off = 0;

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -65,7 +66,10 @@ std::map<std::string, RunTest> tests_in_order(const CsvTable& csv,
     }
     RunTest& t = tests[name];
     const std::string& s = row.at(source);
-    const double w = to_number(row.at(finer), csv.source);
+    // A test that read nothing has empty error and bias cells: no number, not 0.
+    const bool figure = s == "error_pp" || s == "bias_pp";
+    const double w = figure && row.at(finer).empty() ? std::numeric_limits<double>::quiet_NaN()
+                                                     : to_number(row.at(finer), csv.source);
     if (s == "error_pp") {
       t.error_pp = w;
     } else if (s == "bias_pp") {

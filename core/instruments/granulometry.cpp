@@ -79,6 +79,8 @@ double curve_error(const TestReadings& dem, const TestReadings& reference) {
     throw std::invalid_argument("curve_error: " + dem.test + " has " +
                                 std::to_string(dem.rows.size()) + " readings, the reference " +
                                 std::to_string(reference.rows.size()));
+  // No reading, no error: the maximum over nothing is unknown, not the 0 it would start at.
+  if (dem.rows.empty()) return std::numeric_limits<double>::quiet_NaN();
   double worst = 0;
   for (std::size_t k = 0; k < dem.rows.size(); ++k) {
     const double t0 = dem.rows[k].time, t1 = reference.rows[k].time;
@@ -95,6 +97,7 @@ double curve_error(const TestReadings& dem, const TestReadings& reference) {
 }
 
 double curve_bias(const TestReadings& reference, const std::vector<SizeClass>& classes) {
+  if (reference.rows.empty()) return std::numeric_limits<double>::quiet_NaN();
   double worst = 0;
   for (const auto& r : reference.rows) {
     const double d = std::abs(r.percent_finer - true_percent_finer(classes, r.diameter));

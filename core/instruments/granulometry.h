@@ -42,9 +42,11 @@ std::vector<GradingPoint> true_grading_curve(const std::vector<SizeClass>& class
 double true_percent_finer(const std::vector<SizeClass>& classes, double diameter);
 
 // Error: the largest |w_o(DEM) - w_o(reference)| over the test's times, percentage points.
-// The two must hold the same times.
+// The two must hold the same times. NaN when there is no reading (or one is no number): a test
+// that read nothing has no error, and is never reported as a perfect 0.
 double curve_error(const TestReadings& dem, const TestReadings& reference);
-// Bias: the largest |w_o(reference) - true percent finer at the reference's phi_o|.
+// Bias: the largest |w_o(reference) - true percent finer at the reference's phi_o|; NaN
+// likewise.
 double curve_bias(const TestReadings& reference, const std::vector<SizeClass>& classes);
 
 struct TestComparison {

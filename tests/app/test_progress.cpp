@@ -72,12 +72,16 @@ TEST(Progress, OnATerminalOneLineRedrawnInPlace) {
 TEST(Progress, TheSummaryShowsEachTestAndWhereTheFiguresAre) {
   const nlohmann::json results = {
       {"hydrometer", {{"error_pp", 1.234}, {"bias_pp", 5.678}, {"readings", 3}}},
-      {"pipette", {{"error_pp", 0.5}, {"bias_pp", 0.25}, {"readings", 0}}}};
+      {"buoyancy", {{"error_pp", nullptr}, {"bias_pp", nullptr}, {"readings", 2}}},
+      {"pipette", {{"error_pp", nullptr}, {"bias_pp", nullptr}, {"readings", 0}}}};
   const std::string text = run_summary(results, 65.4, "no/such/run");
   EXPECT_NE(text.find("done in 65.4 s (1:05 wall)"), std::string::npos) << text;
   EXPECT_NE(text.find("hydrometer           1.23         5.68         3"), std::string::npos)
       << text;
   EXPECT_NE(text.find("pipette                 -            -         0"), std::string::npos)
+      << text;
+  // A reading that is no number: the figure is absent, not 0.
+  EXPECT_NE(text.find("buoyancy                -            -         2"), std::string::npos)
       << text;
   std::size_t start = 0;
   for (std::size_t end; (end = text.find('\n', start)) != std::string::npos; start = end + 1)

@@ -96,6 +96,23 @@ TEST(Runs, OverwriteLeavesNothingOfTheOldRun) {
   expect_one_run(out);
 }
 
+TEST(Runs, ATestThatReadNothingHasNoNumberAnywhere) {
+  // The hydrometer's first reading (30 s) lies past the end (20 s): no error, no bias.
+  const fs::path out = fresh("no_readings");
+  auto r = test::run_sedem("run " + kDemo + " --out " + out.string() + kSmall + "20");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto hydrometer = read_json(out / "run.json")["results"]["hydrometer"];
+  EXPECT_EQ(hydrometer["readings"], 0);
+  EXPECT_TRUE(hydrometer["error_pp"].is_null());
+  EXPECT_TRUE(hydrometer["bias_pp"].is_null());
+  EXPECT_NE(hydrometer.value("note", "").find("no readings"), std::string::npos);
+  const std::string csv = text_of(out / "granulometry.csv");
+  EXPECT_NE(csv.find("hydrometer,error_pp,,,\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("hydrometer,bias_pp,,,\n"), std::string::npos) << csv;
+  EXPECT_NE(r.output.find("hydrometer              -            -         0"), std::string::npos)
+      << r.output;
+}
+
 TEST(Runs, OverwriteNeverDeletesFilesNoRunWrites) {
   const fs::path out = fresh("foreign");
   std::ofstream(out / "notes.txt") << "mine\n";

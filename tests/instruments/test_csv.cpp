@@ -1,6 +1,8 @@
 // The CSV forms of the readings, the granulometry and the laboratory data, read back.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <sstream>
 #include <string>
 
@@ -58,6 +60,20 @@ TEST(Csv, GranulometryHoldsTrueDemReferenceErrorAndBias) {
             "buoyancy,reference,60,1.5e-05,40\n"
             "buoyancy,error_pp,,,1\n"
             "buoyancy,bias_pp,,,0\n");
+}
+
+TEST(Csv, GranulometryLeavesTheFiguresOfATestWithoutReadingsEmpty) {
+  Granulometry g;
+  TestComparison t;
+  t.test = t.dem.test = t.reference.test = "hydrometer";
+  t.error = t.bias = std::numeric_limits<double>::quiet_NaN();  // what compare() gives it
+  g.tests = {t};
+  std::ostringstream out;
+  write_granulometry_csv(out, g);
+  EXPECT_EQ(out.str(),
+            "test,source,time_s,diameter_m,percent_finer\n"
+            "hydrometer,error_pp,,,\n"
+            "hydrometer,bias_pp,,,\n");
 }
 
 TEST(Csv, LabReadingsInTheLaboratorysUnits) {

@@ -2,6 +2,8 @@
 // against the true curve), kept apart.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/instruments/granulometry.h"
 
 namespace sedem {
@@ -56,6 +58,17 @@ TEST(Granulometry, ErrorAndBiasAreKeptApart) {
   EXPECT_NEAR(g.tests[0].error, 0.5, 1e-12);
   EXPECT_NEAR(g.tests[0].bias, 3.0, 1e-12);
   EXPECT_EQ(g.true_curve.size(), 3u);
+}
+
+TEST(Granulometry, ATestWithoutReadingsHasNoErrorAndNoBias) {
+  // The run ended before the test's first reading: its figures are unknown, never a perfect 0.
+  const auto none = curve("hydrometer", {});
+  EXPECT_TRUE(std::isnan(curve_error(none, none)));
+  EXPECT_TRUE(std::isnan(curve_bias(none, three_classes())));
+  const Granulometry g = compare({none}, {none}, three_classes());
+  ASSERT_EQ(g.tests.size(), 1u);
+  EXPECT_TRUE(std::isnan(g.tests[0].error));
+  EXPECT_TRUE(std::isnan(g.tests[0].bias));
 }
 
 TEST(Granulometry, DifferentTimesAreRefused) {
