@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 
@@ -17,6 +18,35 @@ namespace {
 double scale_through_front(double s, double v, double v_above) {
   if (v_above == v) return 1.0;  // the voidage did not change its speed
   return s - v_above > 0 ? std::clamp((s - v) / (s - v_above), 0.5, 2.0) : 2.0;
+}
+
+// The root of a function that falls from f(low) >= 0 to f(high) <= 0, to within `tolerance`:
+// the Illinois variant of the false position, which keeps the bracket and converges
+// superlinearly (a plain false position can stall at one end).
+double bracketed_root(const std::function<double(double)>& f, double low, double high,
+                      double tolerance) {
+  double f_low = f(low), f_high = f(high);
+  if (f_low <= 0) return low;
+  if (f_high >= 0) return high;
+  int kept = 0;  // which end stayed put last time: -1 low, +1 high
+  for (int it = 0; it < 200 && high - low > tolerance; ++it) {
+    double x = (low * f_high - high * f_low) / (f_high - f_low);
+    if (!(x > low && x < high)) x = 0.5 * (low + high);
+    const double fx = f(x);
+    if (fx == 0) return x;
+    if (fx > 0) {
+      low = x;
+      f_low = fx;
+      if (kept == 1) f_high *= 0.5;
+      kept = 1;
+    } else {
+      high = x;
+      f_high = fx;
+      if (kept == -1) f_low *= 0.5;
+      kept = -1;
+    }
+  }
+  return f_low < -f_high ? low : high;
 }
 
 std::vector<SettlingFront> fronts_of(const std::vector<SettlingClass>& classes) {
@@ -96,17 +126,20 @@ std::vector<SettlingFront> voidage_fronts(
     // where both end together).
     const double s = std::min(v[k], previous_speed);
     previous_speed = s;
-    // The finer classes above: a fixed point in their solids, which differ from below by a
-    // few per cent of class k's own share, so a handful of iterations reach round-off.
-    double above = solids - c[k];
-    for (int it = 0; it < 8; ++it) {
-      speeds(k, above, v_above);
-      double next = 0;
-      for (std::size_t m = 0; m < k; ++m) next += c[m] * scale_through_front(s, v[m], v_above[m]);
-      const bool converged = std::abs(next - above) <= 1e-14 * solids;
-      above = next;
-      if (converged) break;
-    }
+    // The finer classes' solids above the front, A: the root of
+    //   F(A) = sum_m c_m (s - v_m) / (s - v_m'(A)) - A,
+    // their flux through the front continuous at the voidage A leaves. Less solids above
+    // means faster finer classes and a larger sum, so F falls as A grows: one root, bracketed
+    // by the finer classes' solids below (F >= 0, their speeds can only grow) and all the
+    // solids below (F = -c_k). A plain fixed point A <- F(A) + A diverges once F's slope
+    // passes 1, at a few times the standard mass; this bracketing never does.
+    auto excess = [&](double a) {
+      speeds(k, a, v_above);
+      double sum = 0;
+      for (std::size_t m = 0; m < k; ++m) sum += c[m] * scale_through_front(s, v[m], v_above[m]);
+      return sum - a;
+    };
+    const double above = bracketed_root(excess, solids - c[k], solids, 1e-14 * solids);
     speeds(k, above, v_above);
     if (held) {
       held->speed[k] = s;

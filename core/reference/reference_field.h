@@ -63,7 +63,7 @@ struct SettlingFront {
 // m speeds up from v_m to v_m'; its flux through the front is continuous,
 //   c_m' (s_k - v_m') = c_m (s_k - v_m),  s_k = v_k(below),
 // so it is slightly denser above. Solved from the deepest region (the initial suspension)
-// upwards, a fixed point in the voidage per front. `velocity(n, voidage)` is class n's
+// upwards, one bracketed root in the voidage per front. `velocity(n, voidage)` is class n's
 // terminal velocity at that voidage; classes are given in any order.
 //
 // With `held`, it also records what the solution did with the speeds: the order of the classes,
