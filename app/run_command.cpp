@@ -109,6 +109,8 @@ std::string engine_message(const std::string& what) {
 }
 
 int run_in(const RunOptions& options, RunContext& ctx) {
+  // From the first instruction: a stop asked during the set-up ends the run at its start.
+  install_stop_handlers();
   const bool resuming = !options.resume_dir.empty();
   fs::path out = options.resume_dir;
   Scene& scene = ctx.scene;
@@ -260,7 +262,6 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   control.warning = [](const std::string& message) {
     std::cerr << "sedem: warning: " << message << '\n';
   };
-  install_stop_handlers();
   try {
     const RunEnd end = simulation.run(control);
     if (!end.engine_error.empty())

@@ -8,8 +8,10 @@ namespace {
 volatile std::sig_atomic_t g_signal = 0;
 
 void on_stop(int sig) {
-  g_signal = sig;
-  std::signal(sig, SIG_DFL);  // the next one is not caught
+  if (g_signal == 0) g_signal = sig;
+  // A second Ctrl-C is a person who will not wait: it kills. A second SIGTERM is a program
+  // repeating its request (coreutils timeout sends two): the run still stops cleanly.
+  if (sig == SIGINT) std::signal(sig, SIG_DFL);
 }
 
 }  // namespace

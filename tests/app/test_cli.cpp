@@ -117,6 +117,34 @@ TEST(Cli, InterruptedRunSaysSoAndKeepsWhatItWrote) {
   EXPECT_FALSE(fs::exists(out / "particles.pvd.tmp"));
 }
 
+TEST(Cli, TwoSigtermsStillStopCleanly) {
+  // coreutils timeout, and others, repeat the request: the second one must not kill.
+  const fs::path out = kOut / "two_sigterms";
+  fs::remove_all(out);
+  const std::string cmd = "run " + kDemo + " --out " + out.string() +
+                          " --set run.end_time_s=1e6 --set output.frames=false --quiet 2>&1 & "
+                          "pid=$!; sleep 1.5; kill -TERM $pid; kill -TERM $pid; wait $pid";
+  auto r = test::run_sedem(cmd);
+  EXPECT_EQ(r.status, 130) << r.output;
+  EXPECT_EQ(read_json(out / "run.json")["status"], "interrupted");
+  EXPECT_TRUE(fs::exists(out / "checkpoint.bin"));
+}
+
+TEST(Cli, ASigtermDuringTheSetUpStopsCleanlyToo) {
+  // Sent while the 200 000 particles are being placed (or, on a fast machine, just after):
+  // either way a record that says interrupted and a checkpoint to go on from, never exit 143.
+  const fs::path out = kOut / "sigterm_setup";
+  fs::remove_all(out);
+  const std::string cmd = "run " + kDemo + " --out " + out.string() +
+                          " --set sample.simulated_count=200000 --set run.end_time_s=1e6"
+                          " --set output.frames=false --set output.particles=false --quiet 2>&1 & "
+                          "pid=$!; sleep 0.4; kill -TERM $pid; wait $pid";
+  auto r = test::run_sedem(cmd);
+  EXPECT_EQ(r.status, 130) << r.output;
+  EXPECT_EQ(read_json(out / "run.json")["status"], "interrupted");
+  EXPECT_TRUE(fs::exists(out / "checkpoint.bin"));
+}
+
 }  // namespace
 }  // namespace sedem
 
