@@ -101,14 +101,21 @@ TEST(Cli, UnwritableOutputFolderFails) {
   EXPECT_NE(r.output.find("cannot write to the output folder"), std::string::npos) << r.output;
 }
 
-TEST(Cli, InterruptedRunSaysSoAndKeepsWhatItWrote) {
-  const fs::path out = kOut / "interrupted";
+// A long run of the demo into kOut/name with `sets`, sent `signals` (shell commands on $pid)
+// after `seconds`: its folder, and the run's exit status and output.
+test::CommandResult stopped_run(const std::string& name, const std::string& sets, double seconds,
+                                const std::string& signals, fs::path& out) {
+  out = kOut / name;
   fs::remove_all(out);
-  // A long run, stopped by SIGTERM after a moment.
-  const std::string cmd = "run " + kDemo + " --out " + out.string() +
-                          " --set run.end_time_s=1e6 --set output.frames=false --quiet 2>&1 & "
-                          "pid=$!; sleep 1.5; kill -TERM $pid; wait $pid";
-  auto r = test::run_sedem(cmd);
+  return test::run_sedem("run " + kDemo + " --out " + out.string() +
+                         " --set run.end_time_s=1e6 --set output.frames=false" + sets +
+                         " --quiet 2>&1 & pid=$!; sleep " + std::to_string(seconds) + "; " +
+                         signals + " wait $pid");
+}
+
+TEST(Cli, InterruptedRunSaysSoAndKeepsWhatItWrote) {
+  fs::path out;
+  auto r = stopped_run("interrupted", "", 1.5, "kill -TERM $pid;", out);
   EXPECT_EQ(r.status, 130) << r.output;
   auto run = read_json(out / "run.json");
   EXPECT_EQ(run["status"], "interrupted");
@@ -119,12 +126,8 @@ TEST(Cli, InterruptedRunSaysSoAndKeepsWhatItWrote) {
 
 TEST(Cli, TwoSigtermsStillStopCleanly) {
   // coreutils timeout, and others, repeat the request: the second one must not kill.
-  const fs::path out = kOut / "two_sigterms";
-  fs::remove_all(out);
-  const std::string cmd = "run " + kDemo + " --out " + out.string() +
-                          " --set run.end_time_s=1e6 --set output.frames=false --quiet 2>&1 & "
-                          "pid=$!; sleep 1.5; kill -TERM $pid; kill -TERM $pid; wait $pid";
-  auto r = test::run_sedem(cmd);
+  fs::path out;
+  auto r = stopped_run("two_sigterms", "", 1.5, "kill -TERM $pid; kill -TERM $pid;", out);
   EXPECT_EQ(r.status, 130) << r.output;
   EXPECT_EQ(read_json(out / "run.json")["status"], "interrupted");
   EXPECT_TRUE(fs::exists(out / "checkpoint.bin"));
@@ -133,13 +136,10 @@ TEST(Cli, TwoSigtermsStillStopCleanly) {
 TEST(Cli, ASigtermDuringTheSetUpStopsCleanlyToo) {
   // Sent while the 200 000 particles are being placed (or, on a fast machine, just after):
   // either way a record that says interrupted and a checkpoint to go on from, never exit 143.
-  const fs::path out = kOut / "sigterm_setup";
-  fs::remove_all(out);
-  const std::string cmd = "run " + kDemo + " --out " + out.string() +
-                          " --set sample.simulated_count=200000 --set run.end_time_s=1e6"
-                          " --set output.frames=false --set output.particles=false --quiet 2>&1 & "
-                          "pid=$!; sleep 0.4; kill -TERM $pid; wait $pid";
-  auto r = test::run_sedem(cmd);
+  fs::path out;
+  auto r = stopped_run("sigterm_setup",
+                       " --set sample.simulated_count=200000 --set output.particles=false", 0.4,
+                       "kill -TERM $pid;", out);
   EXPECT_EQ(r.status, 130) << r.output;
   EXPECT_EQ(read_json(out / "run.json")["status"], "interrupted");
   EXPECT_TRUE(fs::exists(out / "checkpoint.bin"));
