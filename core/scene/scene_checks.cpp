@@ -33,7 +33,7 @@ class Checker {
   }
   std::string value(const std::string& key) const {
     const Param* p = schema_.find(key);
-    return p ? format_user_value(*p) : "?";
+    return p ? shortened(format_user_value(*p)) : "?";
   }
 
  private:

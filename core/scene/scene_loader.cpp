@@ -52,7 +52,7 @@ std::optional<double> as_number(const toml::node& n) {
 }
 
 void assign(const Param& p, const toml::node& node, const std::string& at) {
-  const std::string shown = node_text(node);
+  const std::string shown = shortened(node_text(node));
   auto wrong_type = [&](const char* want) {
     return SceneError(at + ": " + p.key + " = " + shown + " must be " + want);
   };

@@ -69,6 +69,10 @@ const std::string& current_choice(const Param& p, const std::string& value);
 // A value as the user sees it (user units), for printing and run.json.
 std::string format_user_value(const Param& p);
 
+// A value's text in a message: whole when short, else its first and last characters and its
+// length, so that a list of ten thousand values does not bury the message it is part of.
+std::string shortened(const std::string& text, std::size_t longest = 120);
+
 // A value in the unit the user writes it: "1e-06, 10] Pa*s" style ranges, "a, b" choices.
 std::string range_text(const Param& p);
 

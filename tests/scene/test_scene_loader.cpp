@@ -36,6 +36,20 @@ TEST(SceneLoader, OutOfRangeNamesFileLineKeyValueAndRange) {
   EXPECT_NE(e.find("(1e-06, 10] Pa*s"), std::string::npos) << e;
 }
 
+TEST(SceneLoader, AMessageCutsALongValue) {
+  // Ten thousand profile times, the last out of range: the message names the key, the bad
+  // value and the length, not 70 kB of numbers.
+  std::string list = "[";
+  for (int k = 1; k < 10000; ++k) list += std::to_string(k) + ", ";
+  list += "-1]";
+  const std::string e = error_of("[instruments]\nprofile_times_min = " + list + "\n");
+  EXPECT_LT(e.size(), 600u) << e.substr(0, 1000);
+  EXPECT_NE(e.find("instruments.profile_times_min"), std::string::npos) << e;
+  EXPECT_NE(e.find("-1"), std::string::npos) << e;
+  EXPECT_NE(e.find("characters)"), std::string::npos) << e;
+  EXPECT_EQ(shortened("short"), "short");
+}
+
 TEST(SceneLoader, UnknownKeySuggestsTheNearest) {
   const std::string e = error_of("[fluid]\nviscosty = 1e-3\n");
   EXPECT_NE(e.find("unknown key 'fluid.viscosty'"), std::string::npos) << e;
