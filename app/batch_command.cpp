@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <limits>
@@ -92,6 +94,7 @@ int run_in_processes(const std::vector<BatchRun>& runs, const BatchOptions& opti
   int worst = exit_code::ok;
   std::map<pid_t, std::size_t> running;
   std::size_t next = 0, finished = 0;
+  bool passed_on = false;
   auto report = [&](std::size_t i, int status) {
     ++finished;
     if (status != exit_code::ok) worst = status;
@@ -131,8 +134,19 @@ int run_in_processes(const std::vector<BatchRun>& runs, const BatchOptions& opti
       running[pid] = next++;
     }
     if (running.empty()) break;
+    // A stop asked of the batch is passed on to its runs, once, as SIGTERM (which a run takes
+    // any number of times; a second SIGINT would kill the runs a terminal's Ctrl-C already
+    // reached): each stops cleanly with its checkpoint, and the summary lists what finished.
+    if (stop_requested() && !passed_on) {
+      for (const auto& [child, index] : running) ::kill(child, SIGTERM);
+      passed_on = true;
+    }
     int raw = 0;
-    const pid_t pid = ::waitpid(-1, &raw, 0);
+    const pid_t pid = ::waitpid(-1, &raw, WNOHANG);
+    if (pid == 0) {  // none ended yet: look again for a stop in a moment
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      continue;
+    }
     if (pid < 0) {
       if (errno == EINTR) continue;
       break;

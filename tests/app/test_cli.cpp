@@ -165,6 +165,24 @@ TEST(Cli, BatchSweepRunsEachValueIntoItsOwnFolder) {
   EXPECT_EQ(a["status"], "complete");
 }
 
+TEST(Cli, ABatchStoppedPassesTheStopOnToItsRuns) {
+  // SIGTERM to the batch alone (not its process group): its two runs stop cleanly with their
+  // checkpoints, and the batch ends now, not when they would have finished.
+  const fs::path out = kOut / "batch_stopped";
+  fs::remove_all(out);
+  auto r = test::run_sedem("batch " + kDemo + " --out " + out.string() +
+                           " --jobs 2 --sweep sample.seed=1,2 --set run.end_time_s=1e6"
+                           " --set output.frames=false --quiet 2>&1 & pid=$!; sleep 2.5; "
+                           "kill -TERM $pid; wait $pid");
+  EXPECT_EQ(r.status, 130) << r.output;
+  for (const char* seed : {"1", "2"}) {
+    const fs::path run = out / (std::string("demo__sample.seed=") + seed);
+    EXPECT_EQ(read_json(run / "run.json")["status"], "interrupted") << run;
+    EXPECT_TRUE(fs::exists(run / "checkpoint.bin")) << run;
+  }
+  EXPECT_TRUE(fs::exists(out / "summary.csv"));
+}
+
 TEST(Cli, BatchRejectsAMalformedSweep) {
   auto r = test::run_sedem("batch " + kDemo + " --sweep sample.simulated_count");
   EXPECT_EQ(r.status, 1);
