@@ -47,6 +47,10 @@ Scene make_setup(const InvertOptions& o, double temperature_c) {
     const auto record = nlohmann::json::parse(in, nullptr, false);
     if (!in || record.is_discarded() || !record.contains("scene") || !record["scene"].is_object())
       throw SceneError(record_file.string() + ": not a sedem run record");
+    if (const std::string incomplete = incomplete_run(record, o.run); !incomplete.empty()) {
+      if (!o.partial) throw SceneError(incomplete);
+      std::fprintf(stderr, "sedem: warning: partial: %s\n", incomplete.c_str());
+    }
     s = scene_from_json(record["scene"], record_file.string());
   } else if (!o.scene.empty()) {
     s = load_scene(o.scene);

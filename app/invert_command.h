@@ -9,6 +9,7 @@ struct InvertOptions {
   std::string readings;  // CSV: 152H as for `reduce`; sphere time_min, apparent_mass_g;
                          // pipette time_min, dry_mass_g
   std::string run;       // or a sedem run's folder: its readings_<test>.csv, scene and true curve
+  bool partial = false;  // accept a run folder that did not complete
   std::string test = "hydrometer";
   std::string scene;  // set-up from a scene file; empty: a laboratory's, from the flags
   std::string out = "invert-out";

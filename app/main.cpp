@@ -100,6 +100,9 @@ int main(int argc, char** argv) {
                    "Where figures shared by several runs go (one panel per run)")
       ->capture_default_str();
   render_cmd->add_flag("-q,--quiet", render_options.quiet, "Print only warnings and errors");
+  render_cmd->add_flag("--partial", render_options.partial,
+                       "Redraw a run that did not complete (stopped, failed or killed): its "
+                       "files stop where it did");
 
   ReduceOptions reduce_options;
   auto* reduce_cmd = cli.add_subcommand(
@@ -135,6 +138,11 @@ int main(int argc, char** argv) {
                        "Instead of READINGS: a run folder, whose readings (rounded to the "
                        "resolution), scene and true curve are used")
           ->excludes(invert_readings);
+  invert_cmd
+      ->add_flag("--partial", invert_options.partial,
+                 "With --run: accept a run that did not complete (its readings stop where it "
+                 "did)")
+      ->needs(invert_run);
   invert_cmd->add_option("--test", invert_options.test, "hydrometer, buoyancy or pipette")
       ->check(CLI::IsMember({"hydrometer", "buoyancy", "pipette"}))
       ->capture_default_str();

@@ -27,7 +27,8 @@ struct RenderFailure : std::runtime_error {
 };
 
 // Redraws one run; `scene_json` receives its resolved scene as run.json holds it.
-LabelledResults render_one(const fs::path& dir, bool quiet, nlohmann::json& scene_json) {
+LabelledResults render_one(const fs::path& dir, bool quiet, bool partial,
+                           nlohmann::json& scene_json) {
   std::ifstream in(dir / "run.json");
   if (!in)
     throw RenderFailure(dir.string() + ": no run.json (is this a sedem run folder?)",
@@ -40,6 +41,11 @@ LabelledResults render_one(const fs::path& dir, bool quiet, nlohmann::json& scen
                           exit_code::invalid_scene);
     scene = scene_from_json(record.at("scene"), (dir / "run.json").string());
     scene_json = record.at("scene");
+    // A run that did not complete is no whole test: redrawn only when asked, and said so.
+    if (const std::string incomplete = incomplete_run(record, dir); !incomplete.empty()) {
+      if (!partial) throw RenderFailure(incomplete, exit_code::invalid_scene);
+      std::fprintf(stderr, "sedem: warning: partial: %s\n", incomplete.c_str());
+    }
   } catch (const nlohmann::json::exception& e) {
     throw RenderFailure((dir / "run.json").string() + ": " + e.what(), exit_code::invalid_scene);
   } catch (const SceneError& e) {
@@ -92,7 +98,7 @@ int render_runs(const RenderOptions& options) {
   std::vector<nlohmann::json> scenes;
   for (const auto& dir : options.run_dirs) {
     try {
-      runs.push_back(render_one(dir, options.quiet, scenes.emplace_back()));
+      runs.push_back(render_one(dir, options.quiet, options.partial, scenes.emplace_back()));
     } catch (const RenderFailure& e) {
       std::fprintf(stderr, "sedem: %s\n", e.what());
       return e.status;

@@ -9,6 +9,7 @@ struct RenderOptions {
   std::vector<std::string> run_dirs;
   std::string out_dir = "out/figures";  // where figures shared by several runs go
   bool quiet = false;
+  bool partial = false;  // redraw a run that did not complete (its files stop where it did)
 };
 
 // `sedem render RUN_DIR...`: takes every reading and draws every figure and frame again from

@@ -3,6 +3,7 @@
 #include <sys/resource.h>
 
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include "app/atomic_write.h"
@@ -63,6 +64,18 @@ void write_run_record(const RunRecord& r, Scene& scene, const std::filesystem::p
   j["results"] = r.results;
   j["files"] = r.files;
   write_atomically(file, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
+}
+
+std::string incomplete_run(const nlohmann::json& record, const std::filesystem::path& dir) {
+  const std::string status = record.is_object() ? record.value("status", "") : "";
+  if (status == "complete") return {};
+  const double reached = record.is_object() ? record.value("simulated_time_s", 0.0) : 0.0;
+  std::ostringstream m;
+  m << dir.string() << " holds a run that is " << (status.empty() ? "of no status" : status)
+    << ", not complete: its files stop at t = " << reached
+    << " s and may be partly written. Give --partial to use them anyway";
+  if (status != "failed") m << ", or finish the run first: sedem run --resume " << dir.string();
+  return m.str();
 }
 
 }  // namespace sedem::app

@@ -38,6 +38,11 @@ Scene scene_from_json(const nlohmann::json& scene, const std::string& source);
 // Peak resident memory of this process, bytes.
 std::size_t peak_memory_bytes();
 
+// What a command that reads a finished run says of a record whose status is not "complete"
+// (stopped, failed, or killed while "running"): "" for a complete run, else why its files are
+// not a whole test, with the way on (--partial, or finishing it with --resume).
+std::string incomplete_run(const nlohmann::json& record, const std::filesystem::path& dir);
+
 void write_run_record(const RunRecord& record, Scene& scene, const std::filesystem::path& file);
 
 }  // namespace sedem::app

@@ -20,9 +20,9 @@ _sedem() {
   case $command in
     run) opts="--resume --out --overwrite --set --quiet -q --help -h" ;;
     batch) opts="--sweep --seeds --seed0 --out --set --jobs -j --overwrite --quiet -q --help -h" ;;
-    render) opts="--out --quiet -q --help -h" ;;
+    render) opts="--out --partial --quiet -q --help -h" ;;
     reduce) opts="--out --method --gs --mass-g --help -h" ;;
-    invert) opts="--run --test --scene --out --gs --mass-g --volume-ml --area-cm2 --depth-cm
+    invert) opts="--run --partial --test --scene --out --gs --mass-g --volume-ml --area-cm2 --depth-cm
       --temperature-c --resolution --refine --replicas --coverage --seed --quiet -q --help -h" ;;
     design) opts="--test --readings --out --set --dem-count --sizes --quiet -q --help -h" ;;
     bench) opts="--help -h" ;;

@@ -124,6 +124,23 @@ TEST(Cli, InterruptedRunSaysSoAndKeepsWhatItWrote) {
   EXPECT_FALSE(fs::exists(out / "particles.pvd.tmp"));
 }
 
+TEST(Cli, AnIncompleteRunIsRedrawnOrInvertedOnlyWhenAskedAndSaidPartial) {
+  fs::path out;
+  ASSERT_EQ(stopped_run("partial", "", 1.5, "kill -TERM $pid;", out).status, 130);
+  for (const std::string command :
+       {"render " + out.string(), "invert --run " + out.string() + " --out " +
+                                      (out / "inverted").string() + " --test hydrometer"}) {
+    auto refused = test::run_sedem(command + " --quiet");
+    EXPECT_EQ(refused.status, 2) << command << "\n" << refused.output;
+    EXPECT_NE(refused.output.find("interrupted, not complete"), std::string::npos)
+        << refused.output;
+    EXPECT_NE(refused.output.find("--partial"), std::string::npos) << refused.output;
+    auto taken = test::run_sedem(command + " --partial --quiet");
+    EXPECT_EQ(taken.status, 0) << command << "\n" << taken.output;
+    EXPECT_NE(taken.output.find("warning: partial"), std::string::npos) << taken.output;
+  }
+}
+
 TEST(Cli, TwoSigtermsStillStopCleanly) {
   // coreutils timeout, and others, repeat the request: the second one must not kill.
   fs::path out;
