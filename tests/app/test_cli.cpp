@@ -127,7 +127,7 @@ TEST(Cli, InterruptedRunSaysSoAndKeepsWhatItWrote) {
 TEST(Cli, AnIncompleteRunIsRedrawnOrInvertedOnlyWhenAskedAndSaidPartial) {
   fs::path out;
   ASSERT_EQ(stopped_run("partial", "", 1.5, "kill -TERM $pid;", out).status, 130);
-  for (const std::string command :
+  for (const std::string& command :
        {"render " + out.string(), "invert --run " + out.string() + " --out " +
                                       (out / "inverted").string() + " --test hydrometer"}) {
     auto refused = test::run_sedem(command + " --quiet");
