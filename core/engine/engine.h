@@ -6,10 +6,10 @@
 // and hands each step to one stepper: every particle on the common step
 // (schedule/global_stepper.h), or free grains coasting on windows of their own
 // (schedule/local_stepper.h). Candidate lists (Verlet) are rebuilt from the grid when a
-// particle has moved more than its radius since the last build (the search radii carry a
-// margin of two radii); at most every ResortTask::kPeriod steps the rebuild first re-sorts the
-// state in grid order. Every FreezeTask::kPeriod steps resting particles below the lowest
-// instrument are frozen. A blow-up throws InstabilityError.
+// particle has moved beyond the lists' margin since the last build (at least 3 radii:
+// list_margin in schedule/engine_parts.cpp); at most every ResortTask::kPeriod steps the rebuild
+// first re-sorts the state in grid order. Every FreezeTask::kPeriod steps resting particles below
+// the lowest instrument are frozen. A blow-up throws InstabilityError.
 
 #include <cstdint>
 #include <memory>

@@ -70,6 +70,8 @@ RunEnd Simulation::run(const RunControl& control) {
       // and goes on from the saved state.
       runner.pause();
       while (auto snapshot = runner.next(std::chrono::milliseconds(0))) observers_.show(*snapshot);
+      // Taking a snapshot off a full queue wakes the engine for a moment before it rests on
+      // the pause again: wait for that rest, or the checkpoint would find it stepping.
       runner.pause();
       try {
         control.checkpoint([&](const std::string& path) { runner.checkpoint(path); });
