@@ -12,7 +12,6 @@ namespace sedem {
 class ObserverSet {
  public:
   void add(Observer& observer) { observers_.push_back(&observer); }
-  bool empty() const { return observers_.empty(); }
 
   // Every time some observer wants, ascending, close times merged.
   std::vector<double> times() const;
