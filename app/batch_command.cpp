@@ -19,8 +19,10 @@
 
 #include "app/batch_summary.h"
 #include "app/exit_codes.h"
+#include "app/figure_inputs.h"
 #include "app/run_command.h"
 #include "app/run_folder.h"
+#include "app/run_record.h"
 #include "app/seed_figure.h"
 #include "app/stop_signals.h"
 #include "render/plot.h"
@@ -43,7 +45,7 @@ bool has_override(const std::vector<std::string>& overrides, const std::string& 
 // Each test's error against the swept value, one series per test. Values that are not
 // numbers are placed at 1, 2, 3...
 void write_error_figure(const std::vector<BatchRun>& runs, const std::string& key,
-                        const fs::path& out_dir) {
+                        const render::FigureOutput& figures, const fs::path& out_dir) {
   std::vector<double> xs;
   bool numeric = true;
   for (const auto& r : runs) {
@@ -83,7 +85,7 @@ void write_error_figure(const std::vector<BatchRun>& runs, const std::string& ke
       if (!series.x.empty()) plot.series.push_back(std::move(series));
     }
   if (plot.series.empty()) return;
-  render::write_figure(render::single_plot(plot), out_dir / "summary_error");
+  render::write_figure(render::single_plot(plot), out_dir / "summary_error", figures);
 }
 
 // The runs, `jobs` at a time, each a `sedem run` process of its own with 1/jobs of the cores.
@@ -178,16 +180,31 @@ int run_in_turn(const std::vector<BatchRun>& runs, const BatchOptions& options) 
   return worst;
 }
 
+// The summary figures' formats and size: those the first run that has a record asked for.
+render::FigureOutput summary_figure_output(const std::vector<BatchRun>& runs,
+                                           const fs::path& out_dir) {
+  for (const auto& r : runs) {
+    try {
+      const auto record = read_run_record(out_dir / r.folder);
+      return figure_output(scene_from_json(record.at("scene"), r.folder).output);
+    } catch (const std::exception&) {
+      continue;  // a run that failed early has no record: the next one tells
+    }
+  }
+  return {};
+}
+
 // summary.csv, with a sweep the error figure, and from two seeds on the statistics over them.
 void write_summaries(const std::vector<BatchRun>& runs, const std::string& key,
                      const BatchOptions& options) {
   const fs::path out_dir = options.out_dir;
   write_summary_csv(runs, key, out_dir);
-  if (!key.empty()) write_error_figure(runs, key, out_dir);
+  const auto figures = summary_figure_output(runs, out_dir);
+  if (!key.empty()) write_error_figure(runs, key, figures, out_dir);
   if (options.seeds.value_or(0) < 2) return;
   const auto groups = seed_groups(runs, out_dir);
   write_summary_stats_csv(groups, key, out_dir);
-  write_seed_granulometry(groups, out_dir);
+  write_seed_granulometry(groups, figures, out_dir);
   if (!options.quiet) {
     const long long first = options.seed0.value_or(1);
     std::printf("sedem: seeds %lld to %lld; mean \u00b1 half-width of its 95 %% interval\n", first,

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/exit_codes.h"
+#include "app/figure_inputs.h"
 #include "app/run_folder.h"
 #include "core/design/schedule_design.h"
 #include "core/run/schedule_confirmation.h"
@@ -177,7 +178,8 @@ int run_design(const DesignCommandOptions& o) {
     plot.series.push_back(
         curve_series("designed, DEM", dem->designed, render::SeriesStyle::dashed));
   // design_figure, not design: the figure's own CSV must not replace design.csv.
-  render::write_figure(render::single_plot(plot, 760, 480), fs::path(out) / "design_figure");
+  render::write_figure(render::single_plot(plot, 760, 480), fs::path(out) / "design_figure",
+                       figure_output(scene.output));
 
   if (!o.quiet) {
     std::printf("%s, %s, over %.2f-%.2f um (searched in %.2f s):\n", scene.name.c_str(),

@@ -126,7 +126,7 @@ std::vector<render::SampleBulbDensity> fig13_input(const std::vector<LabelledRes
   for (const auto& run : runs) {
     render::SampleBulbDensity s{
         run.label, {}, run.simulated_count, run.column_height, run.homogeneous_density};
-    for (const auto& h : run.results.hydrometer)
+    for (const auto& h : run.results.bulb_profiles)
       s.profiles.push_back({h.time, h.profile_offset, h.profile_density});
     if (!s.profiles.empty()) out.push_back(std::move(s));
   }
@@ -220,9 +220,21 @@ std::vector<render::SampleGrading> fig18_input(const std::vector<LabelledResults
   return out;
 }
 
+render::FigureOutput figure_output(const OutputConfig& output) {
+  render::FigureOutput f;
+  f.formats = render::parse_figure_formats(output.figure_formats);
+  if (output.vector_figures)
+    for (auto format : {render::FigureFormat::svg, render::FigureFormat::pdf})
+      if (std::find(f.formats.begin(), f.formats.end(), format) == f.formats.end())
+        f.formats.push_back(format);
+  f.width_px = int(output.figure_width_px);
+  f.dpi = output.figure_dpi;
+  return f;
+}
+
 void write_figures(const std::vector<LabelledResults>& runs, const std::filesystem::path& dir) {
-  const bool svg =
-      std::any_of(runs.begin(), runs.end(), [](const auto& r) { return r.vector_figures; });
+  if (runs.empty()) return;
+  const render::FigureOutput& svg = runs.front().figures;
   if (auto in = fig11_input(runs); !in.samples.empty())
     render::write_mass_bands(in, dir / "fig11_column", svg);
   if (auto in = fig12_input(runs); !in.samples.empty()) render::write_fig12(in, dir, svg);

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/observe/instrument_observer.h"
+#include "core/scene/scene.h"
 #include "render/mass_bands.h"
 #include "render/paper_figures.h"
 
@@ -21,8 +22,11 @@ struct LabelledResults {
   double particle_density = 2500;
   double simulated_count = 0;      // simulated particles: Fig. 13's band width
   double homogeneous_density = 0;  // kg/m^3, the suspension at t = 0 (Fig. 13)
-  bool vector_figures = false;     // output.vector_figures: Figs. 11-18 also as SVG
+  render::FigureOutput figures;    // formats and size (output.figure_*)
 };
+
+// The figures' formats and size a scene's output keys ask for.
+render::FigureOutput figure_output(const OutputConfig& output);
 
 // Labels for runs drawn side by side, from their resolved scenes (run.json's "scene"): each
 // scene's name when the names tell the runs apart; otherwise what differs between the scenes,
@@ -41,9 +45,8 @@ std::vector<render::BuoyancySeries> fig16_input(const std::vector<LabelledResult
 std::vector<render::PipetteSeries> fig17_input(const std::vector<LabelledResults>& runs);
 std::vector<render::SampleGrading> fig18_input(const std::vector<LabelledResults>& runs);
 
-// Writes every figure the runs have data for into `dir` (PNG + CSV each, and SVG for Figs.
-// 12-18 when a run asks for vector figures); several runs
-// share each figure, one panel (or column of panels) per run.
+// Writes every figure the runs have data for into `dir` (CSV and each format the first run
+// asks for); several runs share each figure, one panel (or column of panels) per run.
 void write_figures(const std::vector<LabelledResults>& runs, const std::filesystem::path& dir);
 
 }  // namespace sedem::app

@@ -69,7 +69,7 @@ void FieldsObserver::observe(const Snapshot& snapshot) {
 }
 
 ColumnFigureObserver::ColumnFigureObserver(const Scene& scene)
-    : height_(scene.cylinder.height), times_(scene.instruments.profile_times) {
+    : height_(scene.cylinder.height), times_(scene.output.fig11_times) {
   std::erase_if(times_, [&](double t) { return t > scene.end_time * (1 + 1e-12); });
 }
 

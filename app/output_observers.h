@@ -57,7 +57,7 @@ class FieldsObserver : public Observer {
   render::FieldSeriesWriter writer_;
 };
 
-// Fig. 11: the column's mass bands and particles at instruments.profile_times_min.
+// Fig. 11: the column's mass bands and particles at output.fig11_times_min.
 class ColumnFigureObserver : public Observer {
  public:
   explicit ColumnFigureObserver(const Scene& scene);

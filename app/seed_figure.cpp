@@ -126,7 +126,8 @@ void add_bands(render::Plot& panel, const std::vector<render::PlotSeries>& bands
 
 }  // namespace
 
-void write_seed_granulometry(const std::vector<SeedGroup>& groups, const fs::path& out_dir) {
+void write_seed_granulometry(const std::vector<SeedGroup>& groups,
+                             const render::FigureOutput& figures, const fs::path& out_dir) {
   std::vector<GroupCurves> curves;
   std::vector<render::SampleGrading> gradings;
   for (const auto& group : groups) {
@@ -139,7 +140,7 @@ void write_seed_granulometry(const std::vector<SeedGroup>& groups, const fs::pat
   figure.title = "Grading curves over the seeds: each test's mean and 95 % band, the true curve";
   for (std::size_t k = 0; k < curves.size(); ++k)
     add_bands(figure.panels[k], curves[k].bands, curves[k].grading.tests);
-  render::write_figure(figure, out_dir / "summary_granulometry");
+  render::write_figure(figure, out_dir / "summary_granulometry", figures);
 }
 
 }  // namespace sedem::app

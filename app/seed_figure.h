@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "app/batch_summary.h"
+#include "render/drawing/figure_files.h"
 
 namespace sedem::app {
 
@@ -14,6 +15,7 @@ namespace sedem::app {
 // curve (neither depends on the seed) are the first complete run's. Groups with no complete
 // run are left out; nothing is written when none has one.
 void write_seed_granulometry(const std::vector<SeedGroup>& groups,
+                             const render::FigureOutput& figures,
                              const std::filesystem::path& out_dir);
 
 }  // namespace sedem::app

@@ -49,7 +49,7 @@ LabelledResults labelled_results(const Scene& scene, const RunObservers& observe
   run.column_width = scene.cylinder.diameter;
   run.particle_density = scene.sample.particle_density;
   run.simulated_count = double(scene.sample.simulated_count);
-  run.vector_figures = scene.output.vector_figures;
+  run.figures = figure_output(scene.output);
   if (observers.instruments) {
     run.results = observers.instruments->results();
     const Suspension& s = observers.instruments->suspension();

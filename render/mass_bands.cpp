@@ -8,7 +8,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "render/offscreen_view.h"
+#include "render/drawing/figure_files.h"
 #include "render/pixel_canvas.h"
 #include "render/plot.h"
 #include "render/text_fit.h"
@@ -89,7 +89,8 @@ void draw_panel(PixelCanvas& canvas, const MassBandsFigure& f, const ColumnSampl
   const double col_h = g.col_y1 - g.col_y0;
   const double side = g.inset_side;
   for (const auto& inset : f.insets) {
-    const auto w = zoom_window(p, f.height, f.width, inset);
+    const double fixed = inset.magnification > 0 ? side / (inset.magnification * g.scale) : 0;
+    const auto w = zoom_window(p, f.height, f.width, inset, fixed);
     const double zoom = side / w.side;  // pixels per metre inside the inset
     double inset_y0 = 0;
     switch (inset.where) {
@@ -121,8 +122,7 @@ void draw_panel(PixelCanvas& canvas, const MassBandsFigure& f, const ColumnSampl
     // Beside the inset, not over its grains: the magnification, then the grains it holds.
     const double magnification = side / (w.side * g.scale);
     const double tx = g.inset_x0 + side + 4;
-    canvas.text(format(magnification < 99.5 ? "\u00d7%.1f" : "\u00d7%.0f", magnification), tx,
-                inset_y0 + side - 6, 10, false);
+    canvas.text(format("\u00d7%.3g", magnification), tx, inset_y0 + side - 6, 10, false);
     canvas.text(w.grains == 0 ? std::string("no") : std::to_string(w.grains), tx, inset_y0 + 19, 10,
                 false);
     canvas.text(w.grains == 1 ? "grain" : "grains", tx, inset_y0 + 7, 10, false);
@@ -149,7 +149,7 @@ void draw_grey_scale(PixelCanvas& canvas, double x0, double y0, double h, double
   canvas.text("(% of total)", x0 + 0.5 * w + 20, y0 + h + 14, 11, true);
   canvas.text("zooms: grains", x0 + 0.5 * w + 20, y0 - 20, 10, true);
   canvas.text("at true size,", x0 + 0.5 * w + 20, y0 - 33, 10, true);
-  canvas.text(format("\u2265 %.1f px", kMinDiscPixels), x0 + 0.5 * w + 20, y0 - 46, 10, true);
+  canvas.text(format("\u2265 %.0f px", kMinDiscPixels), x0 + 0.5 * w + 20, y0 - 46, 10, true);
 }
 
 std::size_t row_count(const MassBandsFigure& f) {
@@ -165,7 +165,7 @@ ParticleDiscs discs_of(const Particles& particles) {
 }
 
 ZoomWindow zoom_window(const ParticleDiscs& p, double height, double width,
-                       const ColumnInset& inset) {
+                       const ColumnInset& inset, double fixed_side) {
   const int third = inset.where == ColumnInset::Where::top      ? 2
                     : inset.where == ColumnInset::Where::middle ? 1
                                                                 : 0;
@@ -182,7 +182,7 @@ ZoomWindow zoom_window(const ParticleDiscs& p, double height, double width,
   ZoomWindow w;
   const double widest = std::min(width, hi - lo);
   if (xs.empty()) {  // nothing to show: a window of the column's width in the third's middle
-    w.side = widest;
+    w.side = fixed_side > 0 ? std::min(fixed_side, widest) : widest;
     w.x0 = -0.5 * w.side;
     w.y0 = 0.5 * (lo + hi - w.side);
     return w;
@@ -198,8 +198,9 @@ ZoomWindow zoom_window(const ParticleDiscs& p, double height, double width,
   const double filled =
       std::clamp(2.0 * (quantile(ys, 0.75) - quantile(ys, 0.25)), 12.0 * largest, hi - lo);
   const double per_grain = width * filled / double(xs.size());
-  w.side = std::clamp(std::sqrt(std::max(inset.grains, 1) * per_grain),
-                      std::min(12.0 * largest, widest), widest);
+  w.side = fixed_side > 0 ? std::min(fixed_side, widest)
+                          : std::clamp(std::sqrt(std::max(inset.grains, 1) * per_grain),
+                                       std::min(12.0 * largest, widest), widest);
   auto median = [](std::vector<double>& v) {
     std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
     return v[v.size() / 2];
@@ -233,7 +234,7 @@ PixelCanvas draw_mass_bands(const MassBandsFigure& f, int& width, int& height) {
   width = int(f.samples.size()) * f.panel_width + kScaleWidth;
   height = int(rows) * f.panel_height + title_h;
 
-  PixelCanvas canvas;
+  PixelCanvas canvas(width, height, f.title);
   for (std::size_t c = 0; c < f.samples.size(); ++c)
     for (std::size_t r = 0; r < f.samples[c].states.size(); ++r)
       draw_panel(canvas, f, f.samples[c], f.samples[c].states[r], full_scale,
@@ -241,11 +242,8 @@ PixelCanvas draw_mass_bands(const MassBandsFigure& f, int& width, int& height) {
   const double body_h = double(rows) * f.panel_height;
   draw_grey_scale(canvas, width - kScaleWidth + 16, 0.5 * body_h - 100, 200, full_scale);
   if (title_h > 0) {
-    auto prop = vtkSmartPointer<vtkTextProperty>::New();
-    prop->SetFontFamilyToArial();
-    prop->SetBold(true);
-    const int size = fitting_font_size(f.title, prop, width - 16, 18);
-    canvas.text(f.title, 0.5 * width, height - 0.5 * title_h, size, true, true);
+    const auto title = fit_text(f.title, width - 16, 18, 8, true);
+    canvas.text(title.text, 0.5 * width, height - 0.5 * title_h, title.size, true, true);
   }
   return canvas;
 }
@@ -254,10 +252,7 @@ PixelCanvas draw_mass_bands(const MassBandsFigure& f, int& width, int& height) {
 
 vtkSmartPointer<vtkImageData> render_mass_bands(const MassBandsFigure& f) {
   int width = 0, height = 0;
-  auto canvas = draw_mass_bands(f, width, height);
-  OffscreenView view(width, height);
-  canvas.draw(view.renderer(), width, height);
-  return view.capture();
+  return rasterize(draw_mass_bands(f, width, height).drawing());
 }
 
 void write_mass_bands_csv(const MassBandsFigure& f, const std::filesystem::path& file) {
@@ -294,17 +289,16 @@ void write_mass_bands_csv(const MassBandsFigure& f, const std::filesystem::path&
   if (!out) throw std::runtime_error("cannot write " + file.string());
 }
 
-void write_mass_bands(const MassBandsFigure& figure, const std::filesystem::path& base, bool svg) {
-  auto png = base, csv = base, vector = base;
-  png += ".png";
+std::vector<std::filesystem::path> write_mass_bands(const MassBandsFigure& figure,
+                                                    const std::filesystem::path& base,
+                                                    const FigureOutput& output) {
+  int width = 0, height = 0;
+  auto files = write_drawing(draw_mass_bands(figure, width, height).drawing(), base, output);
+  auto csv = base;
   csv += ".csv";
-  vector += ".svg";
-  write_png(render_mass_bands(figure), png);
   write_mass_bands_csv(figure, csv);
-  if (svg) {
-    int width = 0, height = 0;
-    draw_mass_bands(figure, width, height).write_svg(vector, width, height);
-  }
+  files.push_back(csv);
+  return files;
 }
 
 std::vector<double> band_fractions_from_layers(const std::vector<double>& layer_mass,

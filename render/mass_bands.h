@@ -8,6 +8,7 @@
 #include <vtkSmartPointer.h>
 
 #include "core/model/particles.h"
+#include "render/drawing/figure_files.h"
 
 namespace sedem::render {
 
@@ -37,12 +38,14 @@ struct ColumnSample {
 };
 
 // A zoom window on one third of the column (top, middle or bottom), drawn beside it. It is
-// placed on the grains there (centred on their median position) and sized to hold about
-// `grains` of them, between 12 largest diameters and the column's width; its magnification
-// against the column's own scale and the grains it holds are printed on it. With no grain in
-// its third it says so.
+// placed on the grains there (centred on their median position). With a `magnification`
+// (against the column's own scale in the picture, as the paper gives its zooms: 25x) it is
+// that much enlarged; without one it is sized to hold about `grains` of them, between 12
+// largest diameters and the column's width. Its magnification and the grains it holds are
+// printed beside it. With no grain in its third it says so.
 struct ColumnInset {
   enum class Where { top, middle, bottom } where;
+  double magnification = 0;  // 0: from `grains`
   int grains = 40;
 };
 
@@ -51,18 +54,23 @@ struct ZoomWindow {
   double x0 = 0, y0 = 0, side = 0;
   std::size_t grains = 0;
 };
+// `side` (m), when positive, fixes the window's side instead of `inset.grains`.
 ZoomWindow zoom_window(const ParticleDiscs& particles, double height, double width,
-                       const ColumnInset& inset);
+                       const ColumnInset& inset, double side = 0);
 
-inline constexpr double kMinDiscPixels = 2.4;
+// Discs smaller than this many pixels across are drawn this size, so that the finest show;
+// every larger one at its true size.
+inline constexpr double kMinDiscPixels = 1.0;
 
 struct MassBandsFigure {
   std::string title;
   double height = 0.457;  // m, the column H
   double width = 0.0635;  // m, the section B
   std::vector<ColumnSample> samples;
-  std::vector<ColumnInset> insets = {
-      {ColumnInset::Where::top}, {ColumnInset::Where::middle}, {ColumnInset::Where::bottom}};
+  // The paper's zooms at 900 s: 25x on the top and middle, 62.5x on the bed.
+  std::vector<ColumnInset> insets = {{ColumnInset::Where::top, 25},
+                                     {ColumnInset::Where::middle, 25},
+                                     {ColumnInset::Where::bottom, 62.5}};
   int panel_width = 270;  // pixels
   int panel_height = 380;
   // Share of the total mass drawn black; larger shares are black too, and the scale's top
@@ -80,9 +88,10 @@ vtkSmartPointer<vtkImageData> render_mass_bands(const MassBandsFigure& figure);
 // "<sample> t=<time> s:mass_percent".
 void write_mass_bands_csv(const MassBandsFigure& figure, const std::filesystem::path& file);
 
-// Writes `<base>.png` and `<base>.csv`, and with `svg` `<base>.svg`.
-void write_mass_bands(const MassBandsFigure& figure, const std::filesystem::path& base,
-                      bool svg = false);
+// Writes `<base>.<format>` for each of `output`'s formats and `<base>.csv`; returns the files.
+std::vector<std::filesystem::path> write_mass_bands(const MassBandsFigure& figure,
+                                                    const std::filesystem::path& base,
+                                                    const FigureOutput& output = {});
 
 // Groups per-layer masses (from the free surface down) into bands of `layers_per_band`
 // layers (the last band takes the remainder) and divides by the total mass.

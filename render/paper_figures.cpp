@@ -10,12 +10,18 @@
 namespace sedem::render {
 namespace {
 
-constexpr std::array<unsigned char, 3> kBlack = {0, 0, 0};
+constexpr std::array<unsigned char, 3> kBlackRgb = {0, 0, 0};
 
 std::vector<double> scaled(const std::vector<double>& v, double factor) {
   std::vector<double> out(v.size());
   std::transform(v.begin(), v.end(), out.begin(), [factor](double x) { return x * factor; });
   return out;
+}
+
+// Halfway to white.
+std::array<unsigned char, 3> lighter(std::array<unsigned char, 3> c) {
+  for (auto& v : c) v = static_cast<unsigned char>((int(v) + 255) / 2);
+  return c;
 }
 
 std::string time_title(double t) {
@@ -123,7 +129,7 @@ Plot against_time(const std::vector<Series>& samples, std::string title, PlotAxi
   if (all_coincide(p.series)) {
     PlotSeries all(kAllSamples, p.series.front().x, p.series.front().y,
                    SeriesStyle::line_and_points);
-    all.color = kBlack;
+    all.color = kBlackRgb;
     p.series = {std::move(all)};
     p.title += ", " + std::string(kAllSamples);
   }
@@ -145,19 +151,20 @@ Figure fig12_largest_diameter(const LargestDiameterInput& in) {
   for (double t : times) {
     Plot plot;
     plot.title = time_title(t);
-    plot.x = axis("depth", "m", 0.0, in.column_height_m);
+    // Depth in cm, as in Figs. 11 and 15.
+    plot.x = axis("depth", "cm", 0.0, 100.0 * in.column_height_m);
     plot.y = diameter_axis();
     for (const auto& s : in.samples)
       for (const auto& p : s.profiles)
         if (std::abs(p.time_s - t) <= 1e-9 * (1 + t))
-          plot.series.emplace_back(s.sample, p.depth_m, scaled(p.largest_diameter_m, 1e6),
-                                   SeriesStyle::dashed);
+          plot.series.emplace_back(s.sample, scaled(p.depth_m, 100.0),
+                                   scaled(p.largest_diameter_m, 1e6), SeriesStyle::dashed);
     PlotSeries eq16("Eq. 16", {}, {});
-    eq16.color = kBlack;
+    eq16.color = kBlackRgb;
     constexpr int n = 100;
     for (int i = 1; i <= n; ++i) {
       const double depth = in.column_height_m * i / n;
-      eq16.x.push_back(depth);
+      eq16.x.push_back(100.0 * depth);
       eq16.y.push_back(
           1e6 * stokes::limiting_diameter(depth, std::max(t, 1e-9), in.particle_density, in.fluid));
     }
@@ -180,13 +187,27 @@ int fig13_band_count(const SampleBulbDensity& s) {
 
 namespace {
 
-// Dark blue for the first time to light blue for the last.
+// The i-th of n times on a perceptually uniform sequential map (viridis, from dark purple to
+// yellow-green, its lightest tenth left out so that the last curve still shows on white):
+// neighbouring times differ as much in lightness as in hue, seven of them stay apart.
 std::array<unsigned char, 3> ramp_color(std::size_t i, std::size_t n) {
-  const double f = n > 1 ? double(i) / double(n - 1) : 0.0;
-  auto mix = [f](double a, double b) {
-    return static_cast<unsigned char>(std::lround(a + f * (b - a)));
-  };
-  return {mix(8, 120), mix(48, 190), mix(107, 230)};
+  static constexpr std::array<std::array<double, 3>, 9> kViridis = {{{68, 1, 84},
+                                                                     {71, 44, 122},
+                                                                     {59, 81, 139},
+                                                                     {44, 113, 142},
+                                                                     {33, 144, 141},
+                                                                     {39, 173, 129},
+                                                                     {92, 200, 99},
+                                                                     {170, 220, 50},
+                                                                     {253, 231, 37}}};
+  const double f = 0.9 * (n > 1 ? double(i) / double(n - 1) : 0.0) * (kViridis.size() - 1);
+  const std::size_t k = std::min(std::size_t(f), kViridis.size() - 2);
+  const double u = f - double(k);
+  std::array<unsigned char, 3> out;
+  for (int c = 0; c < 3; ++c)
+    out[c] = static_cast<unsigned char>(
+        std::lround(kViridis[k][c] + u * (kViridis[k + 1][c] - kViridis[k][c])));
+  return out;
 }
 
 // The band means of one profile and their standard errors, bands of equal length over
@@ -238,10 +259,10 @@ Figure fig13_bulb_density(const std::vector<SampleBulbDensity>& samples) {
     plot.y = axis("suspension density", "kg/m³");
     if (s.homogeneous_kg_m3 > 0) {
       char name[64];
-      std::snprintf(name, sizeof name, "t = 0 (homogeneous)");
+      std::snprintf(name, sizeof name, "homogeneous suspension");
       PlotSeries t0(name, {0.0, 100.0 * length}, {s.homogeneous_kg_m3, s.homogeneous_kg_m3},
                     SeriesStyle::dashed);
-      t0.color = kBlack;
+      t0.color = kBlackRgb;
       plot.series.push_back(std::move(t0));
     }
     for (std::size_t i = 0; i < s.profiles.size(); ++i) {
@@ -271,7 +292,7 @@ Figure fig14_bulb_average(const std::vector<BulbAverageSeries>& samples) {
     plot.x = time_axis();
     plot.y = axis("average density along the bulb", "kg/m³");
     PlotSeries eq19("Eq. 19", s.time_s, s.eq19_kg_m3, SeriesStyle::line);
-    eq19.color = kBlack;
+    eq19.color = kBlackRgb;
     plot.series.push_back(std::move(eq19));
     plot.series.emplace_back("simulation", s.time_s, s.simulated_kg_m3, SeriesStyle::points);
     fit_y_range(plot);
@@ -319,7 +340,7 @@ Figure fig18_granulometry(const std::vector<SampleGrading>& samples) {
     PlotSeries truth(s.truth.name.empty() ? "true" : s.truth.name, s.truth.diameter_m,
                      s.truth.percent_finer, SeriesStyle::line);
     truth.x = scaled(truth.x, 1e6);
-    truth.color = kBlack;
+    truth.color = kBlackRgb;
     as_steps(truth);
     plot.series.push_back(std::move(truth));
     for (std::size_t i = 0; i < s.tests.size(); ++i) {
@@ -329,9 +350,10 @@ Figure fig18_granulometry(const std::vector<SampleGrading>& samples) {
       test.color = color;
       plot.series.push_back(std::move(test));
       if (i < s.references.size()) {
+        // Told apart from the test by style and by tone: dashed, in a lighter tint.
         PlotSeries ref(s.references[i].name, scaled(s.references[i].diameter_m, 1e6),
                        s.references[i].percent_finer, SeriesStyle::dashed);
-        ref.color = color;
+        ref.color = lighter(color);
         plot.series.push_back(std::move(ref));
       }
     }
@@ -340,32 +362,33 @@ Figure fig18_granulometry(const std::vector<SampleGrading>& samples) {
   return sample_grid("Grading curves: tests against the true distribution", std::move(panels));
 }
 
-void write_fig12(const LargestDiameterInput& input, const std::filesystem::path& dir, bool svg) {
-  write_figure(fig12_largest_diameter(input), dir / kFig12Name, svg);
+void write_fig12(const LargestDiameterInput& input, const std::filesystem::path& dir,
+                 const FigureOutput& output) {
+  write_figure(fig12_largest_diameter(input), dir / kFig12Name, output);
 }
 void write_fig13(const std::vector<SampleBulbDensity>& input, const std::filesystem::path& dir,
-                 bool svg) {
-  write_figure(fig13_bulb_density(input), dir / kFig13Name, svg);
+                 const FigureOutput& output) {
+  write_figure(fig13_bulb_density(input), dir / kFig13Name, output);
 }
 void write_fig14(const std::vector<BulbAverageSeries>& input, const std::filesystem::path& dir,
-                 bool svg) {
-  write_figure(fig14_bulb_average(input), dir / kFig14Name, svg);
+                 const FigureOutput& output) {
+  write_figure(fig14_bulb_average(input), dir / kFig14Name, output);
 }
 void write_fig15(const std::vector<HydrometerSeries>& input, const std::filesystem::path& dir,
-                 bool svg) {
-  write_figure(fig15_hydrometer(input), dir / kFig15Name, svg);
+                 const FigureOutput& output) {
+  write_figure(fig15_hydrometer(input), dir / kFig15Name, output);
 }
 void write_fig16(const std::vector<BuoyancySeries>& input, const std::filesystem::path& dir,
-                 bool svg) {
-  write_figure(fig16_buoyancy(input), dir / kFig16Name, svg);
+                 const FigureOutput& output) {
+  write_figure(fig16_buoyancy(input), dir / kFig16Name, output);
 }
 void write_fig17(const std::vector<PipetteSeries>& input, const std::filesystem::path& dir,
-                 bool svg) {
-  write_figure(fig17_pipette(input), dir / kFig17Name, svg);
+                 const FigureOutput& output) {
+  write_figure(fig17_pipette(input), dir / kFig17Name, output);
 }
 void write_fig18(const std::vector<SampleGrading>& input, const std::filesystem::path& dir,
-                 bool svg) {
-  write_figure(fig18_granulometry(input), dir / kFig18Name, svg);
+                 const FigureOutput& output) {
+  write_figure(fig18_granulometry(input), dir / kFig18Name, output);
 }
 
 }  // namespace sedem::render

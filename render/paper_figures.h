@@ -12,8 +12,8 @@ namespace sedem::render {
 
 // The paper's Figs. 12-18 as recipes: plain inputs in SI units (filled from the fields and
 // the instruments' results), a Figure out (plots in user-facing units: µm, cm, g, s).
-// write_figNN(input, dir, svg) writes dir/<name>.png and dir/<name>.csv (and with svg
-// dir/<name>.svg); docs/figures.md lists
+// write_figNN(input, dir, output) writes dir/<name>.<format> for each of output's formats
+// (PNG, SVG, PDF) and dir/<name>.csv; docs/figures.md lists
 // the CSV columns.
 
 // Fig. 12: the largest diameter still above each depth (from the particles) against the
@@ -130,18 +130,18 @@ inline constexpr const char* kFig17Name = "fig17_pipette";
 inline constexpr const char* kFig18Name = "fig18_granulometry";
 
 void write_fig12(const LargestDiameterInput& input, const std::filesystem::path& dir,
-                 bool svg = false);
+                 const FigureOutput& output = {});
 void write_fig13(const std::vector<SampleBulbDensity>& input, const std::filesystem::path& dir,
-                 bool svg = false);
+                 const FigureOutput& output = {});
 void write_fig14(const std::vector<BulbAverageSeries>& input, const std::filesystem::path& dir,
-                 bool svg = false);
+                 const FigureOutput& output = {});
 void write_fig15(const std::vector<HydrometerSeries>& input, const std::filesystem::path& dir,
-                 bool svg = false);
+                 const FigureOutput& output = {});
 void write_fig16(const std::vector<BuoyancySeries>& input, const std::filesystem::path& dir,
-                 bool svg = false);
+                 const FigureOutput& output = {});
 void write_fig17(const std::vector<PipetteSeries>& input, const std::filesystem::path& dir,
-                 bool svg = false);
+                 const FigureOutput& output = {});
 void write_fig18(const std::vector<SampleGrading>& input, const std::filesystem::path& dir,
-                 bool svg = false);
+                 const FigureOutput& output = {});
 
 }  // namespace sedem::render

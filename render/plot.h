@@ -9,12 +9,15 @@
 
 #include <vtkImageData.h>
 #include <vtkSmartPointer.h>
-#include <vtkTextProperty.h>
+
+#include "render/drawing/drawing.h"
+#include "render/drawing/figure_files.h"
 
 namespace sedem::render {
 
-// A generic 2D plot described by plain data, drawn offscreen with VTK's charts and written
-// with the same numbers as CSV, so every picture can be replotted elsewhere.
+// A generic 2D plot described by plain data, laid out as a Drawing (so that PNG, SVG and PDF
+// show the same picture) and written with the same numbers as CSV, so every picture can be
+// replotted elsewhere.
 
 // band: a filled area between `y_low` and `y` (a spread), translucent, not in the legend.
 enum class SeriesStyle { line, dashed, points, line_and_points, band };
@@ -63,14 +66,12 @@ struct AxisTicks {
   std::pair<double, double> range;
   std::vector<double> at;
   std::vector<std::string> labels;
-  // Subtracted from the data before VTK draws them, when the span is small against the
-  // values; the labels keep the true values.
-  double offset = 0;
 };
 AxisTicks axis_ticks(const Plot& plot, bool x);
 
 // Several plots in one image: a grid of `columns` panels per row, filled row by row, with
-// the figure's title above. One panel is a single plot.
+// the figure's title above. One panel is a single plot. Panels whose legends list the same
+// entries share one legend, right of the grid.
 struct Figure {
   std::string title;
   std::vector<Plot> panels;
@@ -82,15 +83,20 @@ struct Figure {
 // A figure holding one plot.
 Figure single_plot(Plot plot, int width = 640, int height = 440);
 
+// The figure laid out in logical pixels; with `layout`, where each panel put what.
+struct PanelLayout;
+Drawing figure_drawing(const Figure& figure, std::vector<PanelLayout>* layout = nullptr);
+
+// The figure rasterised at its logical size (one pixel per logical pixel), as RGB.
 vtkSmartPointer<vtkImageData> render_figure(const Figure& figure);
 
-// Where a rendered figure's panels put their data and legends (pixels, origin bottom left):
+// Where a figure's panels put their data and legends (logical pixels, origin bottom left):
 // the plot area between the axes, and the legend's anchor (its lower-left corner).
 struct PanelLayout {
   std::array<float, 4> plot_area;  // x0, y0, x1, y1
   bool legend_shown = false;
-  bool legend_inline = true;
-  std::array<float, 2> legend_point;
+  bool legend_inline = false;
+  std::array<float, 2> legend_point{};
   std::string title;  // as drawn: shrunk to fit the panel, its middle cut when even that fails
   int title_font_size = 0;
   std::vector<std::string> legend_lines;  // as drawn: long entries wrapped onto several lines
@@ -102,16 +108,10 @@ std::vector<PanelLayout> figure_layout(const Figure& figure);
 // cells empty. Numbers with 9 significant digits.
 void write_figure_csv(const Figure& figure, const std::filesystem::path& file);
 
-// The same figure as SVG, through VTK's vtkSVGExporter: lines, markers, areas and text as
-// vector graphics, for papers.
-void write_figure_svg(const Figure& figure, const std::filesystem::path& file);
-
-// Writes `<base>.png` and `<base>.csv`, and with `svg` `<base>.svg`.
-void write_figure(const Figure& figure, const std::filesystem::path& base, bool svg = false);
-
-// The largest font size, at most `largest`, at which `text` in `prop`'s font fits in `width`
-// pixels (at least 8). Sets `prop`'s size as it tries.
-int fitting_font_size(const std::string& text, vtkTextProperty* prop, int width, int largest);
+// Writes `<base>.<format>` for each of `output`'s formats and `<base>.csv`; returns the files.
+std::vector<std::filesystem::path> write_figure(const Figure& figure,
+                                                const std::filesystem::path& base,
+                                                const FigureOutput& output = {});
 
 // The colour given to the i-th distinct series name (a fixed, colour-blind friendly list).
 std::array<unsigned char, 3> palette_color(std::size_t i);

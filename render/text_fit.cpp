@@ -2,10 +2,9 @@
 
 #include <algorithm>
 
-#include <vtkSmartPointer.h>
-#include <vtkStdString.h>
-#include <vtkTextProperty.h>
-#include <vtkTextRenderer.h>
+#include <cmath>
+
+#include "render/drawing/cairo_painter.h"
 
 namespace sedem::render {
 namespace {
@@ -20,16 +19,7 @@ std::size_t char_end(const std::string& text, std::size_t at) {
 }  // namespace
 
 int text_width(const std::string& text, int size, bool bold) {
-  if (text.empty()) return 0;
-  auto prop = vtkSmartPointer<vtkTextProperty>::New();
-  prop->SetFontFamilyToArial();
-  prop->SetBold(bold);
-  prop->SetFontSize(size);
-  int bbox[4] = {0, 0, 0, 0};
-  auto* renderer = vtkTextRenderer::GetInstance();
-  if (!renderer || !renderer->GetBoundingBox(prop, vtkStdString(text), bbox, 72))
-    return int(text.size()) * size;  // no renderer: a generous guess
-  return bbox[1] - bbox[0];
+  return int(std::ceil(text_advance(text, size, bold)));
 }
 
 FittedText fit_text(const std::string& text, int width, int largest, int smallest, bool bold) {

@@ -7,9 +7,9 @@ namespace sedem::render {
 
 // Text that must fit a width in pixels: titles over a panel, legend entries beside it. The
 // names `sedem render` gives runs (several scene keys and values) are far longer than a
-// sample's name, and VTK draws text past its box, over the neighbouring panel.
+// sample's name, and text drawn past its box runs over the neighbouring panel.
 
-// The width in pixels of `text` in VTK's built-in Arial at `size` points.
+// The width in logical pixels of `text` in the pictures' font at `size` pixels.
 int text_width(const std::string& text, int size, bool bold = false);
 
 struct FittedText {

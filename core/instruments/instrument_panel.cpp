@@ -66,6 +66,13 @@ void InstrumentPanel::observe(double time, const Particles& particles) {
     pipette_readings_.push_back(read_pipette(pipette_, particles, time, suspension_));
 }
 
+HydrometerReading InstrumentPanel::hydrometer_at(double time, const Particles& particles) const {
+  return read_hydrometer(hydrometer_,
+                         compute_layer_fields(particles, suspension_.cylinder, suspension_.fluid,
+                                              suspension_.particle_density, layers_),
+                         time, suspension_);
+}
+
 void InstrumentPanel::observe(double time, const LayerFields& fields) {
   read_fields(time, fields);
   if (pipette_on_ && due(pipette_times_, time))

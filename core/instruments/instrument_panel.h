@@ -31,6 +31,10 @@ class InstrumentPanel {
   // The same from a field uniform across the section (the pipette reads it by layers).
   void observe(double time, const LayerFields& fields);
 
+  // Where the hydrometer would float at `time` and what it would read, recorded nowhere: the
+  // density along its bulb at times other than its readings (Fig. 13).
+  HydrometerReading hydrometer_at(double time, const Particles& particles) const;
+
   // The tests read so far, enabled ones only, in the order hydrometer, buoyancy, pipette.
   std::vector<TestReadings> readings() const;
   const std::vector<HydrometerReading>& hydrometer_readings() const { return hydrometer_readings_; }

@@ -11,6 +11,9 @@ struct InstrumentsConfig {
   std::int64_t layers = 4000;  // n_ly
   // Fig. 12: times of the largest-diameter-above-depth profiles (paper: 60, 120, 300, 900 s).
   std::vector<double> profile_times{60, 120, 300, 900};
+  // Fig. 13: times of the density profiles along the hydrometer's bulb (paper: 0, 60, 180,
+  // 300, 900 s), apart from its reading times so that its first minute can be compared.
+  std::vector<double> bulb_profile_times{0, 60, 180, 300, 900};
 
   bool hydrometer = true;
   std::vector<double> hydrometer_times{120, 300, 900, 1800, 3600, 15000, 86400};  // s

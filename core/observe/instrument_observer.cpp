@@ -19,7 +19,9 @@ InstrumentObserver::InstrumentObserver(const TestSetup& setup, const Sample& sam
       panel_(setup, sample),
       reading_times_(panel_.reading_times()),
       profile_times_(setup.instruments.profile_times),
-      times_(merge_times({reading_times_, profile_times_})),
+      bulb_times_(setup.instruments.hydrometer ? setup.instruments.bulb_profile_times
+                                               : std::vector<double>{}),
+      times_(merge_times({reading_times_, profile_times_, bulb_times_})),
       reference_(reference_readings(setup, sample)) {
   std::erase_if(times_, [&](double t) { return t > setup.end_time * (1 + 1e-12); });
 }
@@ -34,6 +36,8 @@ void InstrumentObserver::observe_in_place(double time, const Particles& particle
     profiles_.push_back(largest_diameter_profile(particles, setup_.cylinder, setup_.fluid,
                                                  particle_density_,
                                                  std::size_t(setup_.instruments.layers), time));
+  if (contains_time(bulb_times_, time))
+    bulb_profiles_.push_back(panel_.hydrometer_at(time, particles));
 }
 
 TestResults InstrumentObserver::results() const {
@@ -50,6 +54,7 @@ TestResults InstrumentObserver::results() const {
   r.granulometry = compare(dem, reference, classes_);
   r.hydrometer = panel_.hydrometer_readings();
   r.profiles = profiles_;
+  r.bulb_profiles = bulb_profiles_;
   return r;
 }
 

@@ -15,6 +15,7 @@ struct TestResults {
   Granulometry granulometry;                     // DEM, reference, true curve, error, bias
   std::vector<HydrometerReading> hydrometer;     // Figs. 13-15, hydrometer.pvd
   std::vector<LargestDiameterProfile> profiles;  // Fig. 12
+  std::vector<HydrometerReading> bulb_profiles;  // Fig. 13, at instruments.bulb_profile_times
   std::vector<TestReadings> dem() const;
 };
 
@@ -40,9 +41,10 @@ class InstrumentObserver : public Observer {
   std::vector<SizeClass> classes_;
   double particle_density_;
   InstrumentPanel panel_;
-  std::vector<double> reading_times_, profile_times_, times_;
+  std::vector<double> reading_times_, profile_times_, bulb_times_, times_;
   std::vector<TestReadings> reference_;
   std::vector<LargestDiameterProfile> profiles_;
+  std::vector<HydrometerReading> bulb_profiles_;
 };
 
 }  // namespace sedem

@@ -9,6 +9,9 @@ void describe(InstrumentsConfig& c, Schema& s) {
             "n_ly: horizontal layers the suspension density is computed in (paper: 4000).");
   s.list("instruments.profile_times_min", &c.profile_times, "min", 60, 0, 1e6,
          "Times of the largest-diameter-above-depth profiles (Fig. 12; paper: 1, 2, 5, 15 min).");
+  s.list("instruments.bulb_profile_times_min", &c.bulb_profile_times, "min", 60, 0, 1e6,
+         "Times of the density profiles along the hydrometer's bulb (Fig. 13; paper: 0, 1, 3, "
+         "5, 15 min).");
   s.flag("instruments.hydrometer.enabled", &c.hydrometer, "Simulate the ASTM 152H hydrometer.");
   s.list("instruments.hydrometer.times_min", &c.hydrometer_times, "min", 60, 1e-6, 1e6,
          "Reading times (ASTM D422: 2, 5, 15, 30, 60, 250, 1440 min).");

@@ -25,11 +25,21 @@ static void describe(OutputConfig& o, Schema& s) {
   s.flag("output.particles", &o.particles, "Write the particles.pvd series for ParaView.");
   s.flag("output.frames", &o.frames,
          "Render a PNG of the column at every snapshot, and Fig. 11 (its panels at "
-         "instruments.profile_times_min).");
+         "output.fig11_times_min).");
   s.flag("output.fields", &o.fields,
          "Write fields.pvd: layer suspension density and concentration at every snapshot.");
+  s.choices("output.figure_formats", &o.figure_formats, {"png", "svg", "pdf"},
+            "Formats of every figure (Figs. 11-18, summaries): any of png, svg, pdf, as "
+            "\"png,pdf\" or [\"png\", \"pdf\"]. SVG and PDF are vector graphics for papers.");
+  s.integer("output.figure_width_px", &o.figure_width_px, 200, 20000,
+            "Width of a PNG figure in pixels (its height follows the figure's shape).");
+  s.number("output.figure_dpi", &o.figure_dpi, "px/in", 1, 36, 2400,
+           "Pixels per inch of the PNG figures: a figure is figure_width_px / figure_dpi "
+           "inches wide, and its SVG and PDF have that size.");
   s.flag("output.vector_figures", &o.vector_figures,
-         "Write Figs. 11-18 as SVG too (vector graphics for papers), beside the PNGs.");
+         "Former switch, still read: true adds svg and pdf to output.figure_formats.");
+  s.list("output.fig11_times_min", &o.fig11_times, "min", 60, 0, 1e6,
+         "Times of Fig. 11's panels, the column and its zooms (paper: 1, 5, 15 min).");
   s.integer("output.frame_width", &o.frame_width, 16, 8192, "Frame width, pixels.");
   s.integer("output.frame_height", &o.frame_height, 16, 8192, "Frame height, pixels.");
 }

@@ -16,11 +16,16 @@ namespace sedem {
 
 // What to write and when.
 struct OutputConfig {
-  double interval = 10.0;       // s between snapshots (particles, fields, frames)
-  bool particles = true;        // particles.pvd series
-  bool frames = true;           // PNG of the column per snapshot
-  bool fields = true;           // fields.pvd: layer density and concentration per snapshot
-  bool vector_figures = false;  // figures also as SVG
+  double interval = 10.0;               // s between snapshots (particles, fields, frames)
+  bool particles = true;                // particles.pvd series
+  bool frames = true;                   // PNG of the column per snapshot
+  bool fields = true;                   // fields.pvd: layer density and concentration per snapshot
+  std::string figure_formats = "png";   // any of png, svg, pdf, comma-separated
+  std::int64_t figure_width_px = 1600;  // a PNG figure's width
+  double figure_dpi = 200;              // pixels per inch: the figures' printed size
+  bool vector_figures = false;          // former switch: adds svg and pdf
+  // Fig. 11: the column at these times (paper: 60, 300, 900 s).
+  std::vector<double> fig11_times{60, 300, 900};
   std::int64_t frame_width = 300;
   std::int64_t frame_height = 720;
 };

@@ -13,6 +13,33 @@
 namespace sedem {
 namespace {
 
+// "png, svg,png" as {"png", "svg"}: items trimmed, repeats dropped, order kept.
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> items;
+  std::istringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    const auto b = item.find_first_not_of(" \t"), e = item.find_last_not_of(" \t");
+    if (b == std::string::npos) continue;
+    item = item.substr(b, e - b + 1);
+    if (std::find(items.begin(), items.end(), item) == items.end()) items.push_back(item);
+  }
+  return items;
+}
+
+// A TOML list of strings as one comma-separated string; nothing if it is anything else.
+std::optional<std::string> joined_strings(const toml::node& node) {
+  const auto* arr = node.as_array();
+  if (!arr) return std::nullopt;
+  std::string out;
+  for (const auto& item : *arr) {
+    auto s = item.value_exact<std::string>();
+    if (!s) return std::nullopt;
+    out += (out.empty() ? "" : ",") + *s;
+  }
+  return out;
+}
+
 std::string where(const std::string& source, const toml::node& node) {
   const auto& region = node.source();
   std::ostringstream os;
@@ -53,7 +80,7 @@ std::optional<double> as_number(const toml::node& n) {
 
 void assign(const Param& p, const toml::node& node, const std::string& at) {
   const std::string shown = shortened(node_text(node));
-  auto wrong_type = [&](const char* want) {
+  auto wrong_type = [&](const std::string& want) {
     return SceneError(at + ": " + p.key + " = " + shown + " must be " + want);
   };
   std::visit(
@@ -74,19 +101,20 @@ void assign(const Param& p, const toml::node& node, const std::string& at) {
           check_range(p, *v, at, shown);
           *target = *v * p.to_si;
         } else if constexpr (std::is_same_v<T, std::string>) {
-          auto s = node.value_exact<std::string>();
-          if (!s) throw wrong_type("a string");
-          if (!p.choices.empty() &&
-              std::find(p.choices.begin(), p.choices.end(), *s) == p.choices.end()) {
-            std::string allowed;
-            for (const auto& c : p.choices) {
-              const bool former = std::any_of(p.aliases.begin(), p.aliases.end(),
-                                              [&](const auto& a) { return a.first == c; });
-              if (!former) allowed += (allowed.empty() ? "" : ", ") + c;
-            }
-            throw SceneError(at + ": " + p.key + " = " + shown + " is not one of: " + allowed);
-          }
-          *target = *s;
+          std::optional<std::string> s = node.value_exact<std::string>();
+          if (p.several && !s) s = joined_strings(node);
+          if (!s) throw wrong_type(p.several ? "a string or a list of strings" : "a string");
+          const auto items = p.several ? split_list(*s) : std::vector<std::string>{*s};
+          if (items.empty()) throw wrong_type("at least one of: " + range_text(p));
+          for (const auto& item : items)
+            if (!p.choices.empty() &&
+                std::find(p.choices.begin(), p.choices.end(), item) == p.choices.end())
+              throw SceneError(at + ": " + p.key + " = " + shown +
+                               (p.several ? ": '" + shortened(item) + "'" : "") +
+                               " is not one of: " + range_text(p));
+          std::string value;
+          for (const auto& item : items) value += (value.empty() ? "" : ",") + item;
+          *target = value;
         } else {
           const auto* arr = node.as_array();
           if (!arr) throw wrong_type("a list of numbers");

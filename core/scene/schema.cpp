@@ -35,6 +35,13 @@ Param& Schema::choice(std::string key, std::string* target, std::vector<std::str
       Param{std::move(key), target, "", 1, 0, 0, false, std::move(choices), std::move(doc), {}});
 }
 
+Param& Schema::choices(std::string key, std::string* target, std::vector<std::string> choices,
+                       std::string doc) {
+  Param& p = choice(std::move(key), target, std::move(choices), std::move(doc));
+  p.several = true;
+  return p;
+}
+
 Param& Schema::text(std::string key, std::string* target, std::string doc) {
   return add(Param{std::move(key), target, "", 1, 0, 0, false, {}, std::move(doc), {}});
 }

@@ -28,6 +28,9 @@ struct Param {
   // Former names of choices, {former, current}: a scene or run record that says the former
   // still loads, and is written and read as the current one (current_choice).
   std::vector<std::pair<std::string, std::string>> aliases;
+  // A choice of several: the value is a comma-separated list of choices ("png,pdf"), given
+  // as that string or as a TOML list of strings.
+  bool several = false;
 };
 
 class Schema {
@@ -41,6 +44,9 @@ class Schema {
   Param& choice(std::string key, std::string* target, std::vector<std::string> choices,
                 std::string doc);
   Param& text(std::string key, std::string* target, std::string doc);
+  // Any of `choices`, at least one, stored as "a,b" in the order given.
+  Param& choices(std::string key, std::string* target, std::vector<std::string> choices,
+                 std::string doc);
   Param& list(std::string key, std::vector<double>* target, std::string unit, double to_si,
               double min, double max, std::string doc);
 

@@ -6,6 +6,7 @@
 
 #include "core/model/snapshot.h"
 
+#include "render/drawing/figure_files.h"
 #include "render/series_reader.h"
 
 namespace sedem::test {
@@ -16,6 +17,10 @@ inline std::filesystem::path baseline(const char* name) {
 inline std::filesystem::path output_dir() {
   return SEDEM_TEST_OUTPUT;
 }
+
+// Every format a figure can be written in.
+inline const render::FigureOutput kEveryFormat{
+    {render::FigureFormat::png, render::FigureFormat::svg, render::FigureFormat::pdf}};
 
 // A fixed, hand-made snapshot: a 7 x 20 lattice of three sizes.
 inline Snapshot lattice_snapshot() {

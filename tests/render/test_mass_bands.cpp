@@ -84,17 +84,17 @@ TEST(MassBands, PanelTitlesStayWithinTheirPanel) {
 
 TEST(MassBands, SvgHoldsTheColumnAsVectorGraphics) {
   const auto base = test::output_dir() / "mass_bands_vector";
-  render::write_mass_bands(bands_figure(), base, true);
+  render::write_mass_bands(bands_figure(), base, test::kEveryFormat);
   auto svg = base;
   svg += ".svg";
   ASSERT_TRUE(std::filesystem::exists(svg));
   const auto text = test::read_text(svg);
-  EXPECT_NE(text.find("width=\"650\" height=\"794\""), std::string::npos);  // as the PNG
+  EXPECT_NE(text.find("viewBox=\"0 0 650 794\""), std::string::npos);  // as the PNG
   std::size_t polygons = 0;
   for (auto at = text.find("<polygon"); at != std::string::npos; at = text.find("<polygon", at + 1))
     ++polygons;
   EXPECT_GT(polygons, 4u * 40u);  // every band of the four columns, and the grains
-  EXPECT_NE(text.find("<line"), std::string::npos);
+  EXPECT_NE(text.find("<polyline"), std::string::npos);
   EXPECT_NE(text.find(">Mass in the column</text>"), std::string::npos);
   EXPECT_NE(text.find(">sample 2, t = 300 s</text>"), std::string::npos);
   EXPECT_NE(text.find("\u00d7"), std::string::npos);  // the zooms' magnification

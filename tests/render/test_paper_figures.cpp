@@ -74,6 +74,9 @@ TEST(PaperFigures, Fig12Eq16CurveIsTheLimitingDiameter) {
   // sqrt(18 mu / ((rho_p - rho_f) g) * y / t) at y = H, t = 60 s: 96.5 µm.
   EXPECT_NEAR(eq16.y.back(), 1e6 * std::sqrt(18e-3 / (1500 * 9.81) * 0.457 / 60), 1e-9);
   EXPECT_NEAR(eq16.y.back(), 96.5, 0.1);
+  // Depth in cm, as in Figs. 11 and 15: the column's bottom at 45.7 cm.
+  EXPECT_EQ(f.panels[0].x.unit, "cm");
+  EXPECT_NEAR(eq16.x.back(), 45.7, 1e-9);
   EXPECT_DOUBLE_EQ(f.panels[1].series[1].y[0],
                    1e6 * in.samples[1].profiles[1].largest_diameter_m[0]);
   expect_matches(f, "fig12.png");
@@ -120,9 +123,9 @@ TEST(PaperFigures, Fig13AveragesOverBandsThatFollowTheParticleCount) {
   EXPECT_EQ(panel.x.title(), "distance below the bulb's top (cm; bands of 0.78 cm)");
   // The axis runs to the bulb's tip and says so, though the last layer's centre is short of it.
   EXPECT_EQ(render::axis_ticks(panel, true).labels.back(), "14");
-  // t = 0 first (homogeneous, dashed, black), then per time a spread band and its means.
+  // The homogeneous suspension first (dashed, black), then per time a spread band and its means.
   ASSERT_EQ(panel.series.size(), 1u + 2u * 3u);
-  EXPECT_EQ(panel.series[0].name, "t = 0 (homogeneous)");
+  EXPECT_EQ(panel.series[0].name, "homogeneous suspension");
   EXPECT_DOUBLE_EQ(panel.series[0].y[0], 1030.0);
   const auto& spread = panel.series[1];
   const auto& t0 = panel.series[2];
@@ -289,8 +292,17 @@ TEST(PaperFigures, Fig18GradingOnALogDiameterAxis) {
   EXPECT_TRUE(f.panels[0].x.log);
   EXPECT_EQ(f.panels[0].x.column_name(), "diameter_um");
   ASSERT_EQ(f.panels[0].series.size(), 4u);  // true, hydrometer, its reference, pipette
+  // The reference told apart from its test by style and tone: dashed, in a lighter tint of
+  // the test's colour.
   EXPECT_EQ(f.panels[0].series[2].style, render::SeriesStyle::dashed);
-  EXPECT_EQ(f.panels[0].series[2].color, f.panels[0].series[1].color);
+  const auto test_rgb = *f.panels[0].series[1].color, ref_rgb = *f.panels[0].series[2].color;
+  EXPECT_NE(ref_rgb, test_rgb);
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(ref_rgb[c], (test_rgb[c] + 255) / 2);
+  // The panels list the same curves: one legend for the figure, right of both panels.
+  const auto layout = render::figure_layout(f);
+  ASSERT_EQ(layout.size(), 2u);
+  EXPECT_EQ(layout[0].legend_point, layout[1].legend_point);
+  EXPECT_GT(layout[0].legend_point[0], layout[1].plot_area[2]);
 
   const auto dir = test::output_dir() / "fig18";
   render::write_fig18(in, dir);

@@ -109,7 +109,7 @@ TEST(Plot, SvgHoldsTheFigureAsVectorGraphics) {
   f.title = "Settling in kg/m³";
   const auto base = test::output_dir() / "plot_svg" / "figure";
   std::filesystem::remove_all(base.parent_path());
-  render::write_figure(f, base, true);
+  render::write_figure(f, base, test::kEveryFormat);
   auto svg = base;
   svg += ".svg";
   ASSERT_TRUE(std::filesystem::exists(svg));
@@ -117,7 +117,7 @@ TEST(Plot, SvgHoldsTheFigureAsVectorGraphics) {
   EXPECT_NE(text.find("<svg"), std::string::npos);
   EXPECT_NE(text.find("Settling"), std::string::npos);       // the panel's title as text
   EXPECT_NE(text.find("percent finer"), std::string::npos);  // an axis title
-  EXPECT_NE(text.find("<path"), std::string::npos);          // the curves as paths
+  EXPECT_NE(text.find("<polyline"), std::string::npos);      // the curves as lines
   // The figure's title as text in the picture, not only as the document's <title>.
   const auto title = text.find("Settling in kg/m³");
   ASSERT_NE(title, std::string::npos);
@@ -167,7 +167,9 @@ std::string without_spaces(std::string s) {
 }
 
 TEST(Plot, LongLegendEntriesWrapBesideTheData) {
-  const auto f = long_names_figure();
+  auto f = long_names_figure();
+  // The second panel's curves differ, so each panel keeps a legend of its own.
+  f.panels[1].series[1].style = render::SeriesStyle::dashed;
   const auto layout = render::figure_layout(f);
   ASSERT_EQ(layout.size(), 2u);
   for (std::size_t i = 0; i < layout.size(); ++i) {
@@ -206,7 +208,7 @@ TEST(Plot, PanelTitlesStayWithinTheirPanel) {
   }
   // Titles too wide for the plot area are drawn in the charts' scene: the SVG has them.
   const auto base = test::output_dir() / "plot_long_titles";
-  render::write_figure(f, base, true);
+  render::write_figure(f, base, test::kEveryFormat);
   auto svg = base;
   svg += ".svg";
   EXPECT_NE(test::read_text(svg).find(kLongRun), std::string::npos);
@@ -234,7 +236,7 @@ TEST(Plot, TickLabelsNeitherRepeatNorRunTogether) {
 }
 
 TEST(Plot, DrawsCurvesOnANarrowAxisFarFromZero) {
-  // 1000.0 to 1000.3 kg/m³ (a coarse sample's bulb average): VTK 9.1 alone draws nothing.
+  // 1000.0 to 1000.3 kg/m³ (a coarse sample's bulb average): VTK 9.1's charts drew nothing.
   for (bool fixed : {false, true}) {
     render::Plot p;
     p.x = render::axis("time", "s", true);
@@ -250,7 +252,6 @@ TEST(Plot, DrawsCurvesOnANarrowAxisFarFromZero) {
     p.legend = false;
     const auto image = render::render_figure(render::single_plot(p));
     EXPECT_GT(test::pixels_of(image, {255, 0, 0}, 0, 640), 400) << fixed;
-    EXPECT_GT(render::axis_ticks(p, false).offset, 999.0);
   }
 }
 
