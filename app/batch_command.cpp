@@ -17,6 +17,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "app/batch_index.h"
 #include "app/batch_summary.h"
 #include "app/exit_codes.h"
 #include "app/figure_inputs.h"
@@ -201,10 +202,15 @@ void write_summaries(const std::vector<BatchRun>& runs, const std::string& key,
   write_summary_csv(runs, key, out_dir);
   const auto figures = summary_figure_output(runs, out_dir);
   if (!key.empty()) write_error_figure(runs, key, figures, out_dir);
-  if (options.seeds.value_or(0) < 2) return;
-  const auto groups = seed_groups(runs, out_dir);
-  write_summary_stats_csv(groups, key, out_dir);
-  write_seed_granulometry(groups, figures, out_dir);
+  const bool stats = options.seeds.value_or(0) >= 2;
+  const auto groups = stats ? seed_groups(runs, out_dir) : std::vector<SeedGroup>();
+  if (stats) {
+    write_summary_stats_csv(groups, key, out_dir);
+    write_seed_granulometry(groups, figures, out_dir);
+  }
+  // The page of the batch, with the summaries above.
+  write_batch_index(runs, key, out_dir);
+  if (!stats) return;
   if (!options.quiet) {
     const long long first = options.seed0.value_or(1);
     std::printf("sedem: seeds %lld to %lld; mean \u00b1 half-width of its 95 %% interval\n", first,
@@ -322,8 +328,9 @@ int batch(const BatchOptions& options) {
     if (worst == exit_code::ok) worst = exit_code::io_failure;
   }
   if (!options.quiet)
-    std::printf("sedem: batch of %zu runs: %s\n", runs.size(),
-                (fs::path(options.out_dir) / "summary.csv").c_str());
+    std::printf("sedem: batch of %zu runs: %s, %s\n", runs.size(),
+                (fs::path(options.out_dir) / "summary.csv").c_str(),
+                (fs::path(options.out_dir) / "index.html").c_str());
   return worst;
 }
 

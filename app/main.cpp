@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
                       "the outputs of a run that --overwrite replaces");
   run_cmd->add_flag("--overwrite", run_options.overwrite,
                     "Replace the run that the output folder holds (its series, frames, "
-                    "figures, readings)");
+                    "figures, readings, report)");
   run_cmd->add_option("--set", run_options.overrides,
                       "Override a scene key, key=value (repeatable)");
   run_cmd->add_flag("-q,--quiet", run_options.quiet, "Print only warnings and errors");
@@ -92,7 +92,9 @@ int main(int argc, char** argv) {
 
   RenderOptions render_options;
   auto* render_cmd = cli.add_subcommand(
-      "render", "Draw a run's figures and frames again from its saved files, without simulating");
+      "render",
+      "Draw a run's figures, frames and report.html again from its saved files, without "
+      "simulating");
   render_cmd->add_option("runs", render_options.run_dirs, "Run folders (written by sedem run)")
       ->required();
   render_cmd

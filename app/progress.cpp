@@ -151,6 +151,8 @@ std::string run_summary(const nlohmann::json& results, double wall_time,
   if (fs::exists(out / "frames")) text += "  frames:   " + (out / "frames/").string() + '\n';
   if (fs::exists(out / "particles.pvd"))
     text += "  ParaView: " + (out / "particles.pvd").string() + '\n';
+  if (fs::exists(out / "report.html"))
+    text += "  report:   " + (out / "report.html").string() + '\n';
   text += "  record:   " + (out / "run.json").string() + '\n';
   return text;
 }

@@ -6,9 +6,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/atomic_write.h"
 #include "app/exit_codes.h"
 #include "app/output_observers.h"
+#include "app/run_folder.h"
 #include "app/run_record.h"
+#include "app/run_report.h"
 #include "app/test_outputs.h"
 #include "core/observe/observer_set.h"
 #include "core/run/stage_setups.h"
@@ -26,6 +29,17 @@ struct RenderFailure : std::runtime_error {
   int status;
 };
 
+// report.html again, from the record and what the folder now holds; run.json lists the files
+// anew when they changed (a folder written before the report was).
+void update_report(nlohmann::json record, const fs::path& dir) {
+  const nlohmann::json listed = record.value("files", nlohmann::json());
+  record["files"] = run_files(dir);
+  write_run_report(record, dir);
+  record["files"] = run_files(dir);
+  if (record["files"] == listed) return;
+  write_atomically(dir / "run.json", [&](std::ostream& out) { out << record.dump(2) << '\n'; });
+}
+
 // Redraws one run; `scene_json` receives its resolved scene as run.json holds it.
 LabelledResults render_one(const fs::path& dir, bool quiet, bool partial,
                            nlohmann::json& scene_json) {
@@ -34,8 +48,9 @@ LabelledResults render_one(const fs::path& dir, bool quiet, bool partial,
     throw RenderFailure(dir.string() + ": no run.json (is this a sedem run folder?)",
                         exit_code::invalid_scene);
   Scene scene;
+  nlohmann::json record;
   try {
-    const auto record = nlohmann::json::parse(in);
+    record = nlohmann::json::parse(in);
     if (!record.at("scene").is_object())
       throw RenderFailure((dir / "run.json").string() + ": not a sedem run record",
                           exit_code::invalid_scene);
@@ -87,6 +102,7 @@ LabelledResults render_one(const fs::path& dir, bool quiet, bool partial,
   for (const auto& [time, file] : entries) replayed.show(read(file, time));
   replayed.finish();
   write_test_outputs(scene, observers, dir);
+  update_report(record, dir);
   if (!quiet) std::printf("sedem: redrew %s from %zu snapshots\n", dir.c_str(), entries.size());
   return labelled_results(scene, observers);
 }

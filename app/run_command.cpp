@@ -14,6 +14,7 @@
 #include "app/run_folder.h"
 #include "app/run_preflight.h"
 #include "app/run_record.h"
+#include "app/run_report.h"
 #include "app/stop_signals.h"
 #include "app/test_outputs.h"
 #include "core/run/simulation.h"
@@ -312,6 +313,16 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   // on from the checkpoint).
   record.wall_time = wall_so_far();
   record.particle_steps = simulation.stats().particle_steps;
+  // The page that shows the run as a whole, from the record as it is written next.
+  record.files = run_files(out);
+  try {
+    write_run_report(run_record_json(record, scene), out);
+  } catch (const std::exception& e) {
+    fail(record, status, exit_code::io_failure,
+         std::string("writing ") + kRunReport + " failed: " + e.what());
+    record.status = "failed";
+    remove_temporary_files(out);
+  }
   record.files = run_files(out);
   try {
     write_run_record(record, scene, out / "run.json");

@@ -36,7 +36,7 @@ class RunFolder {
 std::vector<std::string> run_files(const std::filesystem::path& dir);
 
 // Whether `relative` (a path inside a run folder) is one of the files a run writes: its series,
-// readings, figures, frames, checkpoint. --overwrite removes these and nothing else.
+// readings, figures, frames, checkpoint, report.html. --overwrite removes these and nothing else.
 bool is_run_output(const std::filesystem::path& relative);
 
 // A name usable as one folder inside an output folder: characters other than letters, digits

@@ -46,7 +46,7 @@ std::size_t peak_memory_bytes() {
   return std::size_t(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
 }
 
-void write_run_record(const RunRecord& r, Scene& scene, const std::filesystem::path& file) {
+nlohmann::json run_record_json(const RunRecord& r, Scene& scene) {
   nlohmann::json j;
   j["status"] = r.status;
   if (!r.message.empty()) j["message"] = r.message;
@@ -63,6 +63,11 @@ void write_run_record(const RunRecord& r, Scene& scene, const std::filesystem::p
   j["peak_memory_bytes"] = peak_memory_bytes();
   j["results"] = r.results;
   j["files"] = r.files;
+  return j;
+}
+
+void write_run_record(const RunRecord& r, Scene& scene, const std::filesystem::path& file) {
+  const nlohmann::json j = run_record_json(r, scene);
   write_atomically(file, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
 }
 

@@ -43,6 +43,9 @@ std::size_t peak_memory_bytes();
 // not a whole test, with the way on (--partial, or finishing it with --resume).
 std::string incomplete_run(const nlohmann::json& record, const std::filesystem::path& dir);
 
+// run.json's content: the record, the version, the scene as resolved, the peak memory so far.
+nlohmann::json run_record_json(const RunRecord& record, Scene& scene);
+
 void write_run_record(const RunRecord& record, Scene& scene, const std::filesystem::path& file);
 
 }  // namespace sedem::app

@@ -11,7 +11,7 @@
 #
 # scripts/setup.sh --build-only installs only what building and running sedem needs (the demo's
 # set-up: CMake's configure also wants GoogleTest and clang-format), not the Python test tools,
-# nor ParaView and its libraries; a later plain run adds them.
+# nor ParaView and its libraries, nor Chromium; a later plain run adds them.
 set -euo pipefail
 
 build_only=false
@@ -34,6 +34,8 @@ $build_only || packages+=(
   libavcodec59 libavformat59 libswscale6 libdouble-conversion3 libgdal32 libgl2ps1.4
   libglew2.2 libhdf5-openmpi-103-1 libnetcdf19 libopenmpi3 libtheora0 libpython3.11
   libopengl0 libxcursor1  python3-mpi4py python3-six
+  # Headless Chromium, in which the tests open a run's report.html.
+  chromium
 )
 
 cd "$(dirname "$0")/.."

@@ -179,6 +179,8 @@ TEST(Runs, AFinishedRunPrintsEachTestsErrorAndBias) {
   EXPECT_NE(r.output.find(row), std::string::npos) << row << "\n" << r.output;
   EXPECT_NE(r.output.find("figures:  " + (out / "figures/").string()), std::string::npos)
       << r.output;
+  EXPECT_NE(r.output.find("report:   " + (out / "report.html").string()), std::string::npos)
+      << r.output;
   EXPECT_NE(r.output.find("done in"), std::string::npos) << r.output;
 }
 
@@ -233,6 +235,18 @@ TEST(Batch, WritesASummaryAndAFigureAndRunsJobsAtOnce) {
   EXPECT_EQ(rows, 3);
   EXPECT_TRUE(fs::exists(out / "summary_error.png"));
   EXPECT_NE(text_of(out / "summary_error.csv").find("hydrometer"), std::string::npos);
+  // The batch's page: each run's report, the summary figure and CSV.
+  const std::string index = text_of(out / "index.html");
+  for (const char* count : {"300", "400", "600"})
+    EXPECT_NE(
+        index.find(std::string("href=\"demo__sample.simulated_count=") + count + "/report.html\""),
+        std::string::npos)
+        << index;
+  EXPECT_NE(index.find("<img src=\"summary_error.png\""), std::string::npos) << index;
+  EXPECT_NE(index.find("href=\"summary.csv\""), std::string::npos) << index;
+  EXPECT_NE(index.find("3 runs over <code>sample.simulated_count</code>, 3 complete."),
+            std::string::npos)
+      << index;
 }
 
 TEST(Batch, ScenesSharingANameGetTheirOwnFolders) {

@@ -32,7 +32,7 @@ grep -q -- "^cmake --build build .*--target sedem" "$work/calls" || fail "demo.s
 grep -q -- "^sedem run scenes/demo.toml --out out/demo --overwrite" "$work/calls" ||
   fail "demo.sh: the demo cannot run twice (no --overwrite)"
 grep -q -- "^dpkg-query .* libvtk9-dev$" "$work/calls" || fail "demo.sh: no set-up"
-! grep -q -- "^dpkg-query .* \(python3-pytest\|xvfb\|libgdal32\)$" "$work/calls" ||
+! grep -q -- "^dpkg-query .* \(python3-pytest\|xvfb\|libgdal32\|chromium\)$" "$work/calls" ||
   fail "demo.sh: sets up the test tools or ParaView's libraries too"
 
 : > "$work/calls"
@@ -41,4 +41,5 @@ build=$(grep -- "^cmake --build" "$work/calls") || fail "test.sh: no build"
 case $build in *--target*) fail "test.sh: builds only some targets: $build" ;; esac
 grep -q "^ctest " "$work/calls" || fail "test.sh: no ctest"
 grep -q -- "^dpkg-query .* python3-pytest$" "$work/calls" || fail "test.sh: not the whole set-up"
+grep -q -- "^dpkg-query .* chromium$" "$work/calls" || fail "test.sh: no Chromium for the report test"
 echo "quick start: demo.sh sets up and builds sedem only and overwrites its demo; test.sh all"
