@@ -11,7 +11,8 @@
 #include <vector>
 
 #include "app/exit_codes.h"
-#include "app/paraview_macro.h"
+// The macro, generated into the build tree from docs/sedem_paraview.py (app/CMakeLists.txt).
+#include SEDEM_PARAVIEW_MACRO_HEADER
 
 namespace sedem::app {
 namespace fs = std::filesystem;
