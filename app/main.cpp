@@ -14,6 +14,7 @@
 #include "app/design_command.h"
 #include "app/exit_codes.h"
 #include "app/invert_command.h"
+#include "app/paraview_command.h"
 #include "app/qt_platform.h"
 #include "app/reduce_command.h"
 #include "app/render_command.h"
@@ -105,6 +106,21 @@ int main(int argc, char** argv) {
   render_cmd->add_flag("--partial", render_options.partial,
                        "Redraw a run that did not complete (stopped, failed or killed): its "
                        "files stop where it did");
+
+  ParaviewOptions paraview_options;
+  auto* paraview_cmd = cli.add_subcommand(
+      "paraview",
+      "Write RUN_DIR/sedem.pvsm, a ParaView state that opens the run as the paper shows it "
+      "(runs ParaView's pvpython)");
+  paraview_cmd->add_option("run", paraview_options.run_dir, "Run folder (written by sedem run)")
+      ->required();
+  paraview_cmd->add_option("--pvpython", paraview_options.pvpython,
+                           "ParaView's pvpython (default: SEDEM_PVPYTHON, then pvpython on PATH)");
+  paraview_cmd->add_option("--time", paraview_options.time,
+                           "Simulated time shown, s (default: the last)");
+  paraview_cmd->add_option("--screenshot", paraview_options.screenshot,
+                           "Also save the state's picture as this PNG");
+  paraview_cmd->add_flag("-q,--quiet", paraview_options.quiet, "Print only warnings and errors");
 
   ReduceOptions reduce_options;
   auto* reduce_cmd = cli.add_subcommand(
@@ -244,6 +260,7 @@ int main(int argc, char** argv) {
     if (run_cmd->parsed()) return run(run_options);
     if (batch_cmd->parsed()) return batch(batch_options);
     if (render_cmd->parsed()) return render_runs(render_options);
+    if (paraview_cmd->parsed()) return paraview_state(paraview_options);
     if (reduce_cmd->parsed()) return reduce(reduce_options);
     if (invert_cmd->parsed()) return invert(invert_options);
     if (design_cmd->parsed()) return design(design_options);

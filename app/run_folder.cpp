@@ -37,8 +37,8 @@ bool is_run_output(const fs::path& relative) {
   const fs::path name(top);
   const std::string ext = name.extension().string();
   return kOutputFolders.count(top) > 0 || top == "run.json" || top == "checkpoint.bin" ||
-         top == "checkpoint.json" || top == "report.html" || ext == ".pvd" || ext == ".csv" ||
-         ext == ".tmp";
+         top == "checkpoint.json" || top == "report.html" || top == "sedem.pvsm" || ext == ".pvd" ||
+         ext == ".csv" || ext == ".tmp";
 }
 
 std::vector<std::string> run_files(const fs::path& dir) {

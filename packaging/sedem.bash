@@ -7,10 +7,10 @@ _sedem() {
     cur=${COMP_WORDS[COMP_CWORD]} prev=${COMP_WORDS[COMP_CWORD-1]}
     words=("${COMP_WORDS[@]}") cword=$COMP_CWORD
   fi
-  local commands="run batch render reduce invert design bench"
+  local commands="run batch render paraview reduce invert design bench"
   local command="" i
   for ((i = 1; i < cword; i++)); do
-    case ${words[i]} in run|batch|render|reduce|invert|design|bench) command=${words[i]}; break ;; esac
+    case ${words[i]} in run|batch|render|paraview|reduce|invert|design|bench) command=${words[i]}; break ;; esac
   done
   if [[ -z $command ]]; then
     COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
@@ -21,6 +21,7 @@ _sedem() {
     run) opts="--resume --out --overwrite --set --quiet -q --help -h" ;;
     batch) opts="--sweep --seeds --seed0 --out --set --jobs -j --overwrite --quiet -q --help -h" ;;
     render) opts="--out --partial --quiet -q --help -h" ;;
+    paraview) opts="--pvpython --time --screenshot --quiet -q --help -h" ;;
     reduce) opts="--out --method --gs --mass-g --help -h" ;;
     invert) opts="--run --partial --test --scene --out --gs --mass-g --volume-ml --area-cm2 --depth-cm
       --temperature-c --resolution --refine --replicas --coverage --seed --quiet -q --help -h" ;;
@@ -33,7 +34,8 @@ _sedem() {
     --test) COMPREPLY=($(compgen -W "hydrometer buoyancy pipette" -- "$cur")); return ;;
     --run) COMPREPLY=($(compgen -d -- "$cur")); return ;;
     --scene) COMPREPLY=($(compgen -f -X '!*.toml' -- "$cur") $(compgen -d -- "$cur")); return ;;
-    --set|--sweep|--seeds|--seed0|--gs|--mass-g|--jobs|-j|--readings|--dem-count|--sizes) return ;;
+    --pvpython|--screenshot) COMPREPLY=($(compgen -f -- "$cur")); return ;;
+    --set|--time|--sweep|--seeds|--seed0|--gs|--mass-g|--jobs|-j|--readings|--dem-count|--sizes) return ;;
   esac
   if [[ $cur == -* ]]; then
     COMPREPLY=($(compgen -W "$opts" -- "$cur"))
@@ -41,7 +43,7 @@ _sedem() {
   fi
   case $command in
     run|batch|design) COMPREPLY=($(compgen -f -X '!*.toml' -- "$cur") $(compgen -d -- "$cur")) ;;
-    render) COMPREPLY=($(compgen -d -- "$cur")) ;;
+    render|paraview) COMPREPLY=($(compgen -d -- "$cur")) ;;
     reduce|invert) COMPREPLY=($(compgen -f -X '!*.csv' -- "$cur") $(compgen -d -- "$cur")) ;;
     bench) COMPREPLY=($(compgen -W "engine accuracy speedup" -- "$cur")) ;;
   esac

@@ -13,7 +13,8 @@ exe=$prefix/bin/sedem
 "$exe" --version | grep -q . || fail "sedem --version"
 for f in share/sedem/scenes/demo.toml share/sedem/scenes/sample1.toml share/doc/sedem/README.md \
   share/doc/sedem/docs/python.md share/doc/sedem/docs/scenes.md share/man/man1/sedem.1 \
-  share/bash-completion/completions/sedem "$pydir/sedem/__init__.py"; do
+  share/bash-completion/completions/sedem "$pydir/sedem/__init__.py" \
+  share/sedem/paraview/Macros/sedem_paraview.py; do
   [ -f "$prefix/$f" ] || fail "not installed: $f"
 done
 

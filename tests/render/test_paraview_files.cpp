@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <numbers>
+#include <set>
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -308,16 +309,112 @@ TEST(ParaviewFiles, ParaviewReadsEverySeriesAndShowsItWithNoFurtherStep) {
   EXPECT_EQ(h.at("representation"), "Surface");
 }
 
+// A run of 30 000 grains as sample 5 holds them (2.5-70 um, as many of each size, H = 0.457 m,
+// B = 0.0635 m), written by sedem's own writers at 0 and 300 s: each grain has fallen at its
+// Stokes velocity from where it started (a fixed pseudo-random lattice) and the ones that
+// reached the bottom lie in a bed; the layers' suspension density follows from the grains
+// (1000-1025 kg/m^3 over the suspension, thinning upwards), the bed's layers overfilled.
+std::filesystem::path write_sample5_like_run(const std::string& name) {
+  const auto dir = test::output_dir() / name;
+  std::filesystem::remove_all(dir);
+  const double height = 0.457, width = 0.0635, rho_p = 2500, rho_f = 1000;
+  const std::size_t n = 30000, layers = 400;
+  render::ParticleSeriesWriter particles(dir, rho_p);
+  render::FieldSeriesWriter fields(dir);
+  render::HydrometerSeriesWriter bulb(dir, {{0.0, 0.02, 0.14, 0.30}, {0.0, 0.014, 0.014, 0.003}},
+                                      height);
+  Snapshot snap;
+  snap.particles.resize(n);
+  auto& p = snap.particles;
+  std::uint32_t state = 12345;
+  auto uniform = [&state] {
+    state = state * 1664525u + 1013904223u;
+    return double(state >> 8) / double(1u << 24);
+  };
+  std::vector<double> x0(n), y0(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    x0[i] = (uniform() - 0.5) * (width - 1e-4);
+    y0[i] = 0.012 + uniform() * (height - 0.014);
+    p.diameter[i] = 2.5e-6 * std::pow(70.0 / 2.5, double(i % 220) / 219.0);
+    p.weight[i] = 1.0;
+    p.size_class[i] = std::int32_t(i % 220);
+    p.id[i] = std::uint32_t(i);
+  }
+  for (double t : {0.0, 300.0}) {
+    snap.time = t;
+    std::vector<double> solid(layers, 0.0);  // kg/m^3 of grains, top layer first
+    std::size_t settled = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double v = (rho_p - rho_f) * 9.81 * p.diameter[i] * p.diameter[i] / 18e-3;
+      p.x[i] = x0[i];
+      p.y[i] = y0[i] - v * t;
+      p.vy[i] = -v;
+      if (p.y[i] < 0.012) {  // in the bed: packed into the bottom 12 mm
+        p.y[i] = 0.0005 + 0.0115 * double(settled++ % 997) / 997.0;
+        p.vy[i] = 0;
+      }
+      const auto j = std::min(layers - 1, std::size_t((height - p.y[i]) / height * layers));
+      // 60 g in the paper's litre, shared by the grains: 0.06 kg/m^3 each on average.
+      solid[j] += (p.y[i] < 0.012 ? 20.0 : 1.0) * 60.0 * double(layers) / double(n);
+    }
+    particles.write(snap);
+    render::LayerFields f;
+    f.time_s = t;
+    f.column_height_m = height;
+    f.section_width_m = width;
+    for (std::size_t j = 0; j < layers; ++j) {
+      f.concentration_kg_m3.push_back(solid[j]);
+      f.suspension_density_kg_m3.push_back(rho_f + (1 - rho_f / rho_p) * solid[j]);
+    }
+    fields.write(f);
+    if (t > 0) bulb.write(t, 0.17);
+  }
+  return dir;
+}
+
+// Distinct colours (to 8 levels a channel) among the pixels of [x0, x1) x [y0, y1), rows from
+// the bottom, leaving out white and near-white.
+int distinct_colours(vtkImageData* image, int x0, int x1, int y0, int y1) {
+  std::set<int> colours;
+  for (int j = y0; j < y1; ++j)
+    for (int i = x0; i < x1; ++i) {
+      const auto* px = static_cast<unsigned char*>(image->GetScalarPointer(i, j, 0));
+      if (px[0] > 245 && px[1] > 245 && px[2] > 245) continue;
+      colours.insert((px[0] / 8) * 1024 + (px[1] / 8) * 32 + px[2] / 8);
+    }
+  return int(colours.size());
+}
+
 TEST(ParaviewFiles, TheStateMacroShowsARunAsThePaperDoes) {
-  const auto dir = write_run("pv_state");
+  const auto dir = write_sample5_like_run("pv_state");
   const auto png = dir / "state.png";
   const auto out = pvpython(kSource / "docs/sedem_paraview.py",
-                            "'" + dir.string() + "' --time 10 --screenshot '" + png.string() +
+                            "'" + dir.string() + "' --time 300 --screenshot '" + png.string() +
                                 "' --state '" + (dir / "sedem.pvsm").string() + "'");
   ASSERT_TRUE(std::filesystem::exists(png)) << out;
   EXPECT_TRUE(std::filesystem::exists(dir / "sedem.pvsm")) << out;
-  auto result = render::compare_with_baseline(
-      render::read_png(png), test::baseline("paraview_state.png"), test::output_dir(), 20.0);
+  const auto image = render::read_png(png);
+  int dims[3];
+  image->GetDimensions(dims);
+  ASSERT_EQ(dims[0], 1600);
+  ASSERT_EQ(dims[1], 900);
+  // The layout: the column in x < 480, the zoom in [480, 960), the chart in [960, 1600). The
+  // column's strip is 0.0635 m of 1.04 * 0.457 m over 900 px: 120 px wide about x = 240.
+  const int strip0 = 190, strip1 = 290;
+  // The suspension is coloured over its own range: its upper half (y from 0.5 H to 0.9 H)
+  // holds many shades of blue, not white; the lower half is darker than the upper.
+  EXPECT_GT(distinct_colours(image, strip0, strip1, 480, 800), 20);
+  EXPECT_LT(test::pixels_of(image, {255, 255, 255}, strip0, strip1), (strip1 - strip0) * 300);
+  // Grains by size: the bed's grains in the column take many colours of the diameter map.
+  EXPECT_GT(distinct_colours(image, strip0, strip1, 10, 40), 15);
+  // The bulb: its outline in the column's upper part, darker than the strip behind it.
+  EXPECT_GT(test::dark_pixels(image, strip0, strip1, 560, 900), 100);
+  // The chart's y labels whole: nothing dark touches the chart's left edge (a clipped label
+  // does), and there are labels in the 100 px beside it.
+  EXPECT_EQ(test::dark_pixels(image, 960, 964, 0, 900), 0);
+  EXPECT_GT(test::dark_pixels(image, 964, 1060, 40, 860), 300);
+  auto result = render::compare_with_baseline(image, test::baseline("paraview_state.png"),
+                                              test::output_dir(), 20.0);
   EXPECT_TRUE(result.passed) << result.message;
 }
 
