@@ -4,12 +4,12 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/atomic_write.h"
 #include "app/batch_summary.h"
 #include "app/html_text.h"
 #include "app/report_images.h"
 #include "app/report_page.h"
 #include "app/run_report.h"
+#include "render/atomic_write.h"
 
 namespace sedem::app {
 namespace fs = std::filesystem;

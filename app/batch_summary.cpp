@@ -3,7 +3,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "app/atomic_write.h"
+#include "render/atomic_write.h"
 
 namespace sedem::app {
 namespace fs = std::filesystem;

@@ -14,9 +14,11 @@
 #include "core/lab/hydrometer_reduction.h"
 #include "core/lab/lab_csv.h"
 #include "core/lab/water.h"
+#include "core/model/shortened.h"
 #include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
+#include "render/atomic_write.h"
 #include "render/invert_figure.h"
 
 namespace sedem::app {
@@ -31,10 +33,44 @@ struct InvalidSetup : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+std::string number(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.9g", v);
+  return b;
+}
+
 void check_range(const char* flag, double value, double lo, double hi) {
   if (!(value >= lo && value <= hi))
-    throw InvalidSetup(std::string(flag) + " = " + std::to_string(value) + ": allowed " +
-                       std::to_string(lo) + " to " + std::to_string(hi));
+    throw InvalidSetup(std::string(flag) + " = " + number(value) + " is out of range; allowed " +
+                       number(lo) + " to " + number(hi));
+}
+
+// The flags' own ranges, checked before anything is read: a NaN or an absurd value is named
+// by its flag, not by what it would break further on.
+void check_flags(const InvertOptions& o) {
+  // core/lab/water's formulas hold from 0 to 40 C.
+  if (o.temperature_c) check_range("--temperature-c", *o.temperature_c, 0.0, 40.0);
+  if (o.area_cm2) check_range("--area-cm2", *o.area_cm2, 1.0, 1000.0);
+  if (o.volume_ml) check_range("--volume-ml", *o.volume_ml, 10.0, 10000.0);
+  if (o.specific_gravity) check_range("--gs", *o.specific_gravity, 1.01, 10.0);
+  if (o.dry_mass_g) check_range("--mass-g", *o.dry_mass_g, 1.0, 500.0);
+  if (o.depth_cm) check_range("--depth-cm", *o.depth_cm, 2.0, 200.0);
+}
+
+// The command's outputs in `dir`.
+const std::vector<std::string> kOutputs = {"inverted_curve.csv", "readings_fit.csv", "invert.json",
+                                           "invert.png", "invert.csv"};
+
+// A standard reduction's diameter that is no number or coarser than any grain a sedimentation
+// test sorts comes from a time that cannot be right: refused, naming the row.
+void check_diameters(const std::vector<invert::Measurement>& data,
+                     const std::vector<GradingPoint>& standard) {
+  for (std::size_t i = 0; i < standard.size() && i < data.size(); ++i)
+    if (!(standard[i].diameter > 0 && standard[i].diameter <= kMaxLabDiameter))
+      throw InvalidSetup("row " + std::to_string(i + 1) +
+                         ", time_min = " + number(data[i].time / 60.0) +
+                         ": the reduction gives a diameter of " + number(standard[i].diameter) +
+                         " m, outside (0, " + number(kMaxLabDiameter) + "] m: check the time");
 }
 
 // The set-up: the scene's, or a laboratory's 152H test (ASTM cylinder of 27.8 cm^2 filled to
@@ -83,24 +119,33 @@ Scene make_setup(const InvertOptions& o, double temperature_c) {
   return s;
 }
 
-std::string number(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.9g", v);
-  return b;
-}
-
 int run_invert(const InvertOptions& o) {
   const Test test = invert::parse_test(o.test);
   if (o.readings.empty() == o.run.empty()) {
     std::fprintf(stderr, "sedem invert: give READINGS.csv or --run DIR (one of them)\n");
     return exit_code::usage;
   }
+  check_flags(o);
+  // The outputs are checked before the inversion, which can take a while.
+  std::error_code ec;
+  fs::create_directories(o.out, ec);
+  if (ec || !fs::is_directory(o.out)) {
+    std::fprintf(stderr, "sedem: cannot create the output folder %s: %s\n",
+                 shortened(o.out).c_str(), ec ? ec.message().c_str() : "not a folder");
+    return exit_code::output_unwritable;
+  }
+  const fs::path dir(o.out);
+  for (const auto& name : kOutputs)
+    if (const std::string why = unfit_output_file(dir / name); !why.empty()) {
+      std::fprintf(stderr, "sedem: %s\n", shortened(why).c_str());
+      return exit_code::output_unwritable;
+    }
   const std::string source =
       o.run.empty() ? o.readings
                     : (fs::path(o.run) / ("readings_" + test_name(test) + ".csv")).string();
   std::ifstream in(source);
-  if (!in) {
-    std::fprintf(stderr, "sedem: %s: cannot open the readings file\n", source.c_str());
+  if (!in || fs::is_directory(source)) {
+    std::fprintf(stderr, "sedem: %s: cannot open the readings file\n", shortened(source).c_str());
     return exit_code::invalid_scene;
   }
   // The readings in the laboratory's units and, for the 152H, the standard D422 reduction.
@@ -140,6 +185,7 @@ int run_invert(const InvertOptions& o) {
     invert::validate_measurements(test_setup(scene), test, data, {});
     standard = invert::standard_reduction(test_setup(scene), test, data);
   }
+  check_diameters(data, standard);
   invert::InversionOptions options;
   options.resolution = o.resolution;
   options.refine = o.refine;
@@ -148,15 +194,12 @@ int run_invert(const InvertOptions& o) {
   options.seed = o.seed;
   const auto curve = invert::invert_readings(test_setup(scene), test, data, options);
 
-  std::error_code ec;
-  fs::create_directories(o.out, ec);
-  if (ec) {
-    std::fprintf(stderr, "sedem: cannot create %s: %s\n", o.out.c_str(), ec.message().c_str());
-    return exit_code::output_unwritable;
-  }
-  const fs::path dir(o.out);
-  {
-    std::ofstream csv(dir / "inverted_curve.csv");
+  // Every output through a temporary file, its write and close checked (a full disk: exit 4,
+  // no half file); a partial run's say so.
+  const std::string partial_note =
+      o.partial ? "partial: from a run that did not complete; its readings stop where it did" : "";
+  write_atomically(dir / "inverted_curve.csv", [&](std::ostream& csv) {
+    if (o.partial) csv << "# " << partial_note << '\n';
     csv << "diameter_m,percent_finer,percent_finer_low,percent_finer_high,readings_allow_low,"
            "readings_allow_high\n";
     for (std::size_t k = 0; k < curve.diameter.size(); ++k)
@@ -167,11 +210,10 @@ int run_invert(const InvertOptions& o) {
           << ','
           << (curve.bound_upper.empty() ? "" : number(curve.bound_upper_at(curve.diameter[k])))
           << '\n';
-    if (!csv) return exit_code::io_failure;
-  }
+  });
   const std::string unit = test == Test::hydrometer ? "g_per_l" : "g";
-  {
-    std::ofstream csv(dir / "readings_fit.csv");
+  write_atomically(dir / "readings_fit.csv", [&](std::ostream& csv) {
+    if (o.partial) csv << "# " << partial_note << '\n';
     csv << "time_s,measured_" << unit << ",fitted_" << unit << ",pinned_diameter_m,"
         << "inverted_percent_finer,standard_diameter_m,standard_percent_finer"
         << (truth.empty() ? "" : ",true_percent_finer") << '\n';
@@ -183,8 +225,7 @@ int run_invert(const InvertOptions& o) {
       if (!truth.empty()) csv << ',' << number(true_percent_finer(truth, standard[i].diameter));
       csv << '\n';
     }
-    if (!csv) return exit_code::io_failure;
-  }
+  });
   const auto open = curve.widest_open();
   // Against the run's true curve: the largest errors at the standard reduction's diameters.
   double inverted_error = 0, standard_error = 0;
@@ -196,6 +237,10 @@ int run_invert(const InvertOptions& o) {
   {
     nlohmann::json j;
     j["test"] = o.test;
+    if (o.partial) {
+      j["partial"] = true;
+      j["partial_note"] = partial_note;
+    }
     j["readings"] = source;
     j["scene"] = o.scene;
     j["resolution"] = o.resolution > 0 ? o.resolution : invert::default_resolution(test);
@@ -217,13 +262,13 @@ int run_invert(const InvertOptions& o) {
                              {"tolerance", curve.bound_tolerance}};
     if (!truth.empty())
       j["true_curve_error_pp"] = {{"inverted", inverted_error}, {"standard", standard_error}};
-    std::ofstream f(dir / "invert.json");
-    f << j.dump(2) << '\n';
-    if (!f) return exit_code::io_failure;
+    write_atomically(dir / "invert.json", [&](std::ostream& f) { f << j.dump(2) << '\n'; });
   }
   render::InvertFigureInput fig;
   fig.title = "Inverted grading curve (" + o.test + ") and " + standard_name +
-              (curve.bound_lower.empty() ? "" : "; grey: what the readings allow");
+              (curve.bound_lower.empty() ? "" : "; grey: what the readings allow") +
+              (o.partial ? " (partial)" : "");
+  fig.csv_note = partial_note;
   fig.diameter_m = curve.diameter;
   fig.percent_finer = curve.percent_finer;
   fig.lower = curve.lower;
@@ -274,17 +319,20 @@ int run_invert(const InvertOptions& o) {
 int invert(const InvertOptions& options) {
   try {
     return run_invert(options);
+  } catch (const WriteError& e) {
+    std::fprintf(stderr, "sedem: %s\n", e.what());
+    return exit_code::io_failure;
   } catch (const SceneError& e) {
     std::fprintf(stderr, "sedem: %s\n", e.what());
     return exit_code::invalid_scene;
   } catch (const std::invalid_argument& e) {  // LabCsvError, InvalidLabReading, InvalidSetup,
                                               // InvalidInversionInput
     std::fprintf(stderr, "sedem: %s: %s\n",
-                 (options.run.empty() ? options.readings : options.run).c_str(), e.what());
+                 shortened(options.run.empty() ? options.readings : options.run).c_str(), e.what());
     return exit_code::invalid_scene;
   } catch (const std::runtime_error& e) {  // the forward model: hydrometer off the column
     std::fprintf(stderr, "sedem: %s: the forward model failed: %s\n",
-                 (options.run.empty() ? options.readings : options.run).c_str(), e.what());
+                 shortened(options.run.empty() ? options.readings : options.run).c_str(), e.what());
     return exit_code::invalid_scene;
   }
 }

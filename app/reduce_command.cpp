@@ -11,6 +11,8 @@
 #include "app/exit_codes.h"
 #include "core/lab/hydrometer_reduction.h"
 #include "core/lab/lab_csv.h"
+#include "core/model/shortened.h"
+#include "render/atomic_write.h"
 
 namespace sedem::app {
 
@@ -22,19 +24,27 @@ constexpr std::uintmax_t kMaxReadingsBytes = 16u << 20;
 }  // namespace
 
 int reduce(const ReduceOptions& options) {
+  // --out is checked first: a folder, a pipe or a device (as root, renaming over /dev/full
+  // would replace the device) is refused before anything is read or written.
+  if (!options.out.empty())
+    for (const std::string& file : {options.out, options.out + ".tmp"})
+      if (const std::string why = unfit_output_file(file); !why.empty()) {
+        std::fprintf(stderr, "sedem: %s\n", shortened(why).c_str());
+        return exit_code::output_unwritable;
+      }
   std::error_code ec;
   const auto status = std::filesystem::status(options.readings, ec);
   if (!ec && std::filesystem::exists(status) &&
       (!std::filesystem::is_regular_file(status) ||
        std::filesystem::file_size(options.readings, ec) > kMaxReadingsBytes)) {
     std::fprintf(stderr, "sedem: %s: not a readings file (a folder, a device or over 16 MB)\n",
-                 options.readings.c_str());
+                 shortened(options.readings).c_str());
     return exit_code::invalid_scene;
   }
   std::ifstream in(options.readings);
   if (!in) {
-    std::fprintf(stderr, "sedem: %s: cannot open the readings file: %s\n", options.readings.c_str(),
-                 std::strerror(errno));
+    std::fprintf(stderr, "sedem: %s: cannot open the readings file: %s\n",
+                 shortened(options.readings).c_str(), std::strerror(errno));
     return exit_code::invalid_scene;
   }
   std::vector<LabPoint> points;
@@ -44,7 +54,7 @@ int reduce(const ReduceOptions& options) {
     points = options.method == "d7928" ? reduce_astm_d7928(readings, specimen)
                                        : reduce_astm_d422(readings, specimen);
   } catch (const std::invalid_argument& e) {  // LabCsvError, InvalidLabReading
-    std::fprintf(stderr, "sedem: %s: %s\n", options.readings.c_str(), e.what());
+    std::fprintf(stderr, "sedem: %s: %s\n", shortened(options.readings).c_str(), e.what());
     return exit_code::invalid_scene;
   }
   for (const auto& p : points)
@@ -69,7 +79,8 @@ int reduce(const ReduceOptions& options) {
   const std::string tmp = options.out + ".tmp";
   FILE* f = std::fopen(tmp.c_str(), "w");
   if (!f) {
-    std::fprintf(stderr, "sedem: cannot write %s: %s\n", options.out.c_str(), std::strerror(errno));
+    std::fprintf(stderr, "sedem: cannot write %s: %s\n", shortened(options.out).c_str(),
+                 std::strerror(errno));
     return exit_code::output_unwritable;
   }
   const std::string s = text.str();
@@ -80,7 +91,7 @@ int reduce(const ReduceOptions& options) {
   const int close_errno = errno;
   if (!written || !closed || std::rename(tmp.c_str(), options.out.c_str()) != 0) {
     const int e = !written ? write_errno : !closed ? close_errno : errno;
-    std::fprintf(stderr, "sedem: cannot write %s: %s\n", options.out.c_str(),
+    std::fprintf(stderr, "sedem: cannot write %s: %s\n", shortened(options.out).c_str(),
                  e ? std::strerror(e) : "write error");
     std::remove(tmp.c_str());
     return exit_code::io_failure;

@@ -6,7 +6,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/atomic_write.h"
 #include "app/exit_codes.h"
 #include "app/output_observers.h"
 #include "app/run_folder.h"
@@ -17,6 +16,7 @@
 #include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
+#include "render/atomic_write.h"
 #include "render/series_reader.h"
 
 namespace sedem::app {

@@ -17,6 +17,7 @@
 #include "app/run_report.h"
 #include "app/stop_signals.h"
 #include "app/test_outputs.h"
+#include "core/instruments/plausibility.h"
 #include "core/run/simulation.h"
 #include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
@@ -167,6 +168,15 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   record.seed = scene.sample.seed;
   record.particle_count = sample.particles.size();
   record.legs = resuming ? previous.legs + 1 : 1;
+  // Doubts known before anything runs (too few particles in an instrument's volume, coupling,
+  // dilution): printed now and kept in run.json with those on the results.
+  const TestSetup doubts_setup = test_setup(scene);
+  const double doubts_count = double(sample.particles.size());
+  record.warnings = nlohmann::json::array();
+  for (const auto& d : setup_doubts(doubts_setup, doubts_count)) {
+    std::cerr << "sedem: warning: " << d.message << '\n';
+    record.warnings.push_back({{"code", d.code}, {"message", d.message}});
+  }
   try {
     // A new run into a folder: a checkpoint left there by another run is not this one's.
     if (!resuming) remove_checkpoint(out);
@@ -188,6 +198,7 @@ int run_in(const RunOptions& options, RunContext& ctx) {
     try {
       write_run_record(record, scene, out / "run.json");
     } catch (const std::exception&) {
+      write_failed_record_in_place(record, out / "run.json");
     }
     remove_temporary_files(out);
     std::cerr << "sedem: " << record.message << '\n';
@@ -297,6 +308,12 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   try {
     simulation.observers().finish();
     record.results = write_test_outputs(scene, run_observers, out);
+    if (run_observers.instruments && status != exit_code::interrupted)
+      for (const auto& d : result_doubts(run_observers.instruments->results().granulometry,
+                                         doubts_setup, doubts_count)) {
+        std::cerr << "sedem: warning: " << d.message << '\n';
+        record.warnings.push_back({{"code", d.code}, {"message", d.message}});
+      }
   } catch (const std::bad_alloc& e) {
     fail(record, status, exit_code::engine_failure, engine_message(e.what()));
   } catch (const std::exception& e) {
@@ -329,6 +346,8 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   } catch (const std::exception& e) {
     fail(record, status, exit_code::io_failure, e.what());
     remove_temporary_files(out);
+    // Never left "running": the short record in the place of the long one.
+    write_failed_record_in_place(record, out / "run.json");
   }
   if (status == exit_code::ok && !options.quiet)
     if (const auto& r = record.results;
@@ -362,6 +381,7 @@ int run(const RunOptions& options) {
       try {
         write_run_record(ctx.record, ctx.scene, ctx.out / "run.json");
       } catch (const std::exception&) {
+        write_failed_record_in_place(ctx.record, ctx.out / "run.json");
       }
       remove_temporary_files(ctx.out);
     }

@@ -6,8 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "app/atomic_write.h"
 #include "core/scene/scene_loader.h"
+#include "render/atomic_write.h"
 
 namespace sedem::app {
 
@@ -62,6 +62,7 @@ nlohmann::json run_record_json(const RunRecord& r, Scene& scene) {
   j["legs"] = r.legs;
   j["peak_memory_bytes"] = peak_memory_bytes();
   j["results"] = r.results;
+  j["warnings"] = r.warnings;
   j["files"] = r.files;
   return j;
 }
@@ -69,6 +70,16 @@ nlohmann::json run_record_json(const RunRecord& r, Scene& scene) {
 void write_run_record(const RunRecord& r, Scene& scene, const std::filesystem::path& file) {
   const nlohmann::json j = run_record_json(r, scene);
   write_atomically(file, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
+}
+
+bool write_failed_record_in_place(const RunRecord& r, const std::filesystem::path& file) {
+  nlohmann::json j;
+  j["status"] = "failed";
+  j["message"] = r.message.substr(0, 200);
+  std::ofstream out(file, std::ios::trunc);
+  out << j.dump() << '\n';
+  out.close();
+  return bool(out);
 }
 
 std::string incomplete_run(const nlohmann::json& record, const std::filesystem::path& dir) {

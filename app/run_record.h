@@ -25,6 +25,8 @@ struct RunRecord {
   double particle_steps = 0;
   std::int64_t legs = 1;  // the first run and each --resume that went on with it
   nlohmann::json results = nlohmann::json::object();  // each test's error and bias
+  // What makes the results doubtful (core/instruments/plausibility.h): {code, message} each.
+  nlohmann::json warnings = nlohmann::json::array();
   std::vector<std::string> files;  // what the run wrote into its folder, relative to it
 };
 
@@ -46,6 +48,13 @@ std::string incomplete_run(const nlohmann::json& record, const std::filesystem::
 // run.json's content: the record, the version, the scene as resolved, the peak memory so far.
 nlohmann::json run_record_json(const RunRecord& record, Scene& scene);
 
+// Writes run.json atomically. Throws WriteError.
 void write_run_record(const RunRecord& record, Scene& scene, const std::filesystem::path& file);
+
+// A failed run's record when the whole one cannot be written (a full disk): run.json rewritten
+// in place, cut to its status and message (its old blocks freed first, so it fits where the
+// "running" record was), so that it never stays "running". Best effort: false if even that
+// failed.
+bool write_failed_record_in_place(const RunRecord& record, const std::filesystem::path& file);
 
 }  // namespace sedem::app

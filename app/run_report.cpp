@@ -5,11 +5,11 @@
 #include <cstdio>
 #include <map>
 
-#include "app/atomic_write.h"
 #include "app/html_text.h"
 #include "app/progress.h"
 #include "app/report_images.h"
 #include "app/report_page.h"
+#include "render/atomic_write.h"
 
 namespace sedem::app {
 namespace fs = std::filesystem;

@@ -4,9 +4,9 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "app/atomic_write.h"
 #include "app/figure_inputs.h"
 #include "core/instruments/readings_csv.h"
+#include "render/atomic_write.h"
 #include "render/hydrometer_writer.h"
 
 namespace sedem::app {

@@ -61,7 +61,9 @@ Figure invert_figure(const InvertFigureInput& in) {
                       in.standard_percent_finer, SeriesStyle::points);
   standard.color = standard_color;
   plot.series.push_back(std::move(standard));
-  return single_plot(std::move(plot), 720, 480);
+  Figure figure = single_plot(std::move(plot), 720, 480);
+  figure.csv_note = in.csv_note;
+  return figure;
 }
 
 void write_invert_figure(const InvertFigureInput& input, const std::filesystem::path& base) {

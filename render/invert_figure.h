@@ -20,6 +20,7 @@ struct InvertFigureInput {
   std::string standard_name;  // e.g. "ASTM D422"
   std::vector<double> standard_diameter_m, standard_percent_finer;
   std::vector<double> true_diameter_m, true_percent_finer;  // empty: unknown
+  std::string csv_note;  // a comment line above the CSV's header (a partial run's); empty: none
 };
 
 Figure invert_figure(const InvertFigureInput& input);

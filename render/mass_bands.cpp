@@ -8,6 +8,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "render/atomic_write.h"
 #include "render/drawing/figure_files.h"
 #include "render/pixel_canvas.h"
 #include "render/plot.h"
@@ -276,17 +277,17 @@ void write_mass_bands_csv(const MassBandsFigure& f, const std::filesystem::path&
   std::size_t rows = 0;
   for (const auto& c : columns) rows = std::max(rows, c.size());
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
-  std::ofstream out(file);
-  for (std::size_t j = 0; j < header.size(); ++j) out << (j ? "," : "") << header[j];
-  out << "\n";
-  for (std::size_t i = 0; i < rows; ++i) {
-    for (std::size_t j = 0; j < columns.size(); ++j) {
-      if (j) out << ",";
-      if (i < columns[j].size()) out << format("%.9g", columns[j][i]);
-    }
+  write_atomically(file, [&](std::ostream& out) {
+    for (std::size_t j = 0; j < header.size(); ++j) out << (j ? "," : "") << header[j];
     out << "\n";
-  }
-  if (!out) throw std::runtime_error("cannot write " + file.string());
+    for (std::size_t i = 0; i < rows; ++i) {
+      for (std::size_t j = 0; j < columns.size(); ++j) {
+        if (j) out << ",";
+        if (i < columns[j].size()) out << format("%.9g", columns[j][i]);
+      }
+      out << "\n";
+    }
+  });
 }
 
 std::vector<std::filesystem::path> write_mass_bands(const MassBandsFigure& figure,

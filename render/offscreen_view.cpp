@@ -5,8 +5,10 @@
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkPNGReader.h>
 #include <vtkPNGWriter.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include "render/atomic_write.h"
 #include "render/egl_context.h"
 
 namespace sedem::render {
@@ -60,12 +62,19 @@ void OffscreenView::save_png(const std::filesystem::path& file) {
 
 void write_png(vtkImageData* image, const std::filesystem::path& file) {
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  // Encoded in memory, then written whole through a temporary file: a full disk leaves no
+  // half image, and is reported.
   auto writer = vtkSmartPointer<vtkPNGWriter>::New();
-  writer->SetFileName(file.c_str());
+  writer->WriteToMemoryOn();
   writer->SetInputData(image);
   writer->Write();
-  if (writer->GetErrorCode() != 0 || !std::filesystem::exists(file))
-    throw std::runtime_error("cannot write " + file.string());
+  vtkUnsignedCharArray* bytes = writer->GetResult();
+  if (writer->GetErrorCode() != 0 || !bytes || bytes->GetNumberOfValues() == 0)
+    throw std::runtime_error("cannot encode " + file.string());
+  write_atomically(file, [&](std::ostream& out) {
+    out.write(reinterpret_cast<const char*>(bytes->GetPointer(0)),
+              std::streamsize(bytes->GetNumberOfValues()));
+  });
 }
 
 vtkSmartPointer<vtkImageData> read_png(const std::filesystem::path& file) {

@@ -8,6 +8,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "render/atomic_write.h"
 #include "render/drawing/figure_files.h"
 
 namespace sedem::render {
@@ -225,21 +226,22 @@ void write_figure_csv(const Figure& figure, const std::filesystem::path& file) {
   std::size_t rows = 0;
   for (const auto* c : columns) rows = std::max(rows, c->size());
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
-  std::ofstream out(file);
-  for (std::size_t j = 0; j < header.size(); ++j) out << (j ? "," : "") << csv_field(header[j]);
-  out << "\n";
-  char number[32];
-  for (std::size_t i = 0; i < rows; ++i) {
-    for (std::size_t j = 0; j < columns.size(); ++j) {
-      if (j) out << ",";
-      if (i < columns[j]->size()) {
-        std::snprintf(number, sizeof number, "%.9g", (*columns[j])[i]);
-        out << number;
-      }
-    }
+  write_atomically(file, [&](std::ostream& out) {
+    if (!figure.csv_note.empty()) out << "# " << figure.csv_note << "\n";
+    for (std::size_t j = 0; j < header.size(); ++j) out << (j ? "," : "") << csv_field(header[j]);
     out << "\n";
-  }
-  if (!out) throw std::runtime_error("cannot write " + file.string());
+    char number[32];
+    for (std::size_t i = 0; i < rows; ++i) {
+      for (std::size_t j = 0; j < columns.size(); ++j) {
+        if (j) out << ",";
+        if (i < columns[j]->size()) {
+          std::snprintf(number, sizeof number, "%.9g", (*columns[j])[i]);
+          out << number;
+        }
+      }
+      out << "\n";
+    }
+  });
 }
 
 std::vector<std::filesystem::path> write_figure(const Figure& figure,

@@ -78,6 +78,9 @@ struct Figure {
   int columns = 1;
   int panel_width = 480;  // pixels; keep the whole image at most 1600 wide
   int panel_height = 360;
+  // A line written as a comment ("# ...") above the CSV's header, e.g. that the figure is of a
+  // partial run; empty: none.
+  std::string csv_note;
 };
 
 // A figure holding one plot.

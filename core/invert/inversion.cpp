@@ -242,6 +242,12 @@ void validate_measurements(const TestSetup& setup, Test test, const std::vector<
     throw InvalidInversionInput(
         kNoRow, "readings", double(data.size()),
         "the inversion needs " + std::to_string(kMinReadings) + " readings or more");
+  if (data.size() > kMaxReadings)
+    throw InvalidInversionInput(
+        kNoRow, "readings", double(data.size()),
+        "the inversion takes at most " + std::to_string(kMaxReadings) +
+            " readings (a test has a few dozen; the fit's time grows fast with their number): "
+            "keep every few");
   if (options.refine < 0 || options.refine > kMaxRefine)
     throw InvalidInversionInput(
         kNoRow, "refine", options.refine,

@@ -31,9 +31,11 @@ struct InversionOptions {
 // the pipette's analytical balance 0.1 mg.
 double default_resolution(Test test);
 
-// At least this many readings (resolving as many distinct diameters); at most this many
+// At least this many readings (resolving as many distinct diameters), at most kMaxReadings (a
+// test has a few dozen; the fit's cost grows with their square and more); at most kMaxRefine
 // nodes between each two.
 inline constexpr std::size_t kMinReadings = 3;
+inline constexpr std::size_t kMaxReadings = 200;
 inline constexpr int kMaxRefine = 6;
 
 struct InvertedCurve {
@@ -93,8 +95,8 @@ class InvalidInversionInput : public std::invalid_argument {
   std::size_t row_;
 };
 
-// Checks the readings against the test's set-up: positive, increasing times, at least
-// kMinReadings, values between -10 % and 110 % finer as readings (the 152H's raw reading is
+// Checks the readings against the test's set-up: positive, increasing times, kMinReadings to
+// kMaxReadings of them, values between -10 % and 110 % finer as readings (the 152H's raw reading is
 // checked on its -5..60 scale by validate_lab_readings), refine within [0, kMaxRefine]. Throws
 // InvalidInversionInput.
 void validate_measurements(const TestSetup& setup, Test test, const std::vector<Measurement>& data,

@@ -21,8 +21,12 @@ std::vector<Measurement> read_measurements_csv(std::istream& in, Test test) {
   if (test == Test::hydrometer)
     throw std::invalid_argument("read_measurements_csv: the 152H's readings are read by core/lab");
   std::vector<Measurement> out;
-  for (const auto& row : read_numeric_csv(in, {"time_min", reading_format(test).lab_column}))
-    out.push_back({row[0] * 60.0, row[1]});
+  std::vector<std::size_t> lines;
+  const auto rows = read_numeric_csv(in, {"time_min", reading_format(test).lab_column}, {}, &lines);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    check_lab_time_min(lines[i], rows[i][0]);
+    out.push_back({rows[i][0] * 60.0, rows[i][1]});
+  }
   return out;
 }
 

@@ -11,13 +11,14 @@ namespace sedem {
 namespace {
 
 std::string describe_invalid(std::size_t row, const std::string& field, double value,
-                             const std::string& why) {
+                             const std::string& why, std::size_t line) {
   std::ostringstream s;
   if (row == InvalidLabReading::kSpecimen)
     s << "specimen";
   else
     s << "row " << row + 1;
   s << ", " << field << " = " << value << ": " << why;
+  if (line > 0) s << " (line " << line << " of the file)";
   return s.str();
 }
 
@@ -39,25 +40,33 @@ double percent_finer(const LabReading& r, const LabSpecimen& s) {
 
 // A result that is no number, or a share finer far above the whole specimen, comes from
 // inputs that cannot be right: refused, naming the row, rather than written.
-void check_point(std::size_t row, const LabPoint& p, const LabSpecimen& s) {
+void check_point(std::size_t row, const LabReading& r, const LabPoint& p, const LabSpecimen& s) {
   for (const auto& [name, v] : {std::pair<const char*, double>{"diameter_m", p.diameter},
                                 {"percent_finer", p.percent_finer},
                                 {"effective_depth_m", p.effective_depth}})
     if (!std::isfinite(v))
-      throw InvalidLabReading(row, name, v, "the reduction gives no finite number; check the row");
+      throw InvalidLabReading(row, name, v, "the reduction gives no finite number; check the row",
+                              r.line);
+  if (p.diameter > kMaxLabDiameter) {
+    std::ostringstream why;
+    why << "coarser than " << kMaxLabDiameter * 1e3
+        << " mm, which no sedimentation test sorts: the reading time (" << r.time / 60.0
+        << " min) is too short to be true; check time_min";
+    throw InvalidLabReading(row, "diameter_m", p.diameter, why.str(), r.line);
+  }
   if (p.percent_finer > kMaxPercentFiner) {
     std::ostringstream why;
     why << "more than " << kMaxPercentFiner << " % of the specimen cannot be finer; the dry mass ("
         << s.dry_mass * 1e3 << " g) is too small for this reading: check --mass-g";
-    throw InvalidLabReading(row, "percent_finer", p.percent_finer, why.str());
+    throw InvalidLabReading(row, "percent_finer", p.percent_finer, why.str(), r.line);
   }
 }
 
 }  // namespace
 
 InvalidLabReading::InvalidLabReading(std::size_t row, std::string field, double value,
-                                     const std::string& why)
-    : std::invalid_argument(describe_invalid(row, field, value, why)),
+                                     const std::string& why, std::size_t line)
+    : std::invalid_argument(describe_invalid(row, field, value, why, line)),
       row_(row),
       field_(std::move(field)),
       value_(value) {}
@@ -65,27 +74,33 @@ InvalidLabReading::InvalidLabReading(std::size_t row, std::string field, double 
 void validate_lab_readings(const std::vector<LabReading>& readings, const LabSpecimen& s) {
   const std::size_t n = readings.size();
   constexpr auto kSpecimen = InvalidLabReading::kSpecimen;
-  if (!(s.dry_mass > 0))
-    throw InvalidLabReading(kSpecimen, "dry_mass_kg", s.dry_mass, "the dry mass must be positive");
-  if (!(s.specific_gravity > 1))
+  if (!(s.dry_mass > 0) || !std::isfinite(s.dry_mass))
+    throw InvalidLabReading(kSpecimen, "dry_mass_kg", s.dry_mass,
+                            "the dry mass must be positive and finite");
+  if (!(s.specific_gravity > 1 && s.specific_gravity <= 10))
     throw InvalidLabReading(kSpecimen, "specific_gravity", s.specific_gravity,
-                            "the soil must be denser than water (Gs > 1)");
+                            "the soil must be denser than water and no denser than 10 (Gs in "
+                            "(1, 10])");
   for (std::size_t i = 0; i < n; ++i) {
     const auto& r = readings[i];
-    if (!(r.time > 0)) throw InvalidLabReading(i, "time_s", r.time, "times must be positive");
+    if (!(r.time > 0) || !std::isfinite(r.time))
+      throw InvalidLabReading(i, "time_s", r.time, "times must be positive and finite", r.line);
     if (i > 0 && !(r.time > readings[i - 1].time))
       throw InvalidLabReading(
           i, "time_s", r.time,
-          "times must increase (previous row: " + std::to_string(readings[i - 1].time) + " s)");
+          "times must increase (previous row: " + std::to_string(readings[i - 1].time) + " s)",
+          r.line);
     if (!(r.reading >= -5 && r.reading <= 60))
-      throw InvalidLabReading(i, "reading_g_per_l", r.reading, "off the 152H scale (-5 to 60 g/L)");
+      throw InvalidLabReading(i, "reading_g_per_l", r.reading, "off the 152H scale (-5 to 60 g/L)",
+                              r.line);
     if (!(r.temperature >= 0 && r.temperature <= 40))
       throw InvalidLabReading(i, "temperature_c", r.temperature,
-                              "outside 0-40 C, where the water density formula holds");
+                              "outside 0-40 C, where the water density formula holds", r.line);
     if (!(std::abs(r.composite_correction) <= kMaxCompositeCorrection))
       throw InvalidLabReading(i, "composite_correction_g_per_l", r.composite_correction,
                               "must be a number between -65 and 65 g/L (a correction wider than "
-                              "the whole 152H scale is no correction)");
+                              "the whole 152H scale is no correction)",
+                              r.line);
   }
 }
 
@@ -107,7 +122,7 @@ std::vector<LabPoint> reduce_astm_d422(const std::vector<LabReading>& readings,
     p.effective_depth = depth_cm * 1e-2;
     p.corrected_reading = r.reading - r.composite_correction;
     p.percent_finer = percent_finer(r, s);
-    check_point(out.size(), p, s);
+    check_point(out.size(), r, p, s);
     out.push_back(p);
   }
   return out;
@@ -129,7 +144,7 @@ std::vector<LabPoint> reduce_astm_d7928(const std::vector<LabReading>& readings,
         std::sqrt(18.0 * p.viscosity * p.effective_depth / ((rho_solids - rho_w) * g * r.time));
     p.corrected_reading = r.reading - r.composite_correction;
     p.percent_finer = percent_finer(r, s);
-    check_point(out.size(), p, s);
+    check_point(out.size(), r, p, s);
     out.push_back(p);
   }
   return out;

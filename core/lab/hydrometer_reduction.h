@@ -13,6 +13,7 @@ struct LabReading {
   double reading = 0;               // R, g/L, as read at the top of the meniscus corrected
   double temperature = 20;          // deg C of the suspension
   double composite_correction = 0;  // g/L: zero, meniscus, dispersant and temperature
+  std::size_t line = 0;             // the line of the file it was read from; 0: none
 };
 
 // The widest composite correction accepted, g/L (the 152H's scale spans 65 g/L), and the
@@ -20,6 +21,9 @@ struct LabReading {
 // above, a dry mass that does not belong to the readings).
 inline constexpr double kMaxCompositeCorrection = 65;
 inline constexpr double kMaxPercentFiner = 110;
+// The largest diameter a reduction may give, m: coarser than any grain a sedimentation test
+// sorts (fine gravel), so a reading time too short to be true.
+inline constexpr double kMaxLabDiameter = 2e-3;
 
 // The specimen the readings belong to.
 struct LabSpecimen {
@@ -37,11 +41,13 @@ struct LabPoint {
 };
 
 // A reading that cannot be reduced: names the row, the field and the value. row() is
-// 0-based (kSpecimen for the specimen's fields); the message counts rows from 1.
+// 0-based (kSpecimen for the specimen's fields); the message counts rows from 1 and adds the
+// file's line when the reading was read from one (LabReading::line).
 class InvalidLabReading : public std::invalid_argument {
  public:
   static constexpr std::size_t kSpecimen = static_cast<std::size_t>(-1);
-  InvalidLabReading(std::size_t row, std::string field, double value, const std::string& why);
+  InvalidLabReading(std::size_t row, std::string field, double value, const std::string& why,
+                    std::size_t line = 0);
   std::size_t row() const { return row_; }
   const std::string& field() const { return field_; }
   double value() const { return value_; }
@@ -66,8 +72,10 @@ std::vector<LabPoint> reduce_astm_d422(const std::vector<LabReading>& readings,
 std::vector<LabPoint> reduce_astm_d7928(const std::vector<LabReading>& readings,
                                         const LabSpecimen& specimen);
 
-// Checks what both reductions need: positive, increasing times; readings on the -5..60
-// scale; temperatures in 0-40 C; Gs > 1; positive dry mass. Throws InvalidLabReading.
+// Checks what both reductions need: positive, finite, increasing times; readings on the
+// -5..60 scale; temperatures in 0-40 C; Gs in (1, 10]; a positive, finite dry mass. Throws
+// InvalidLabReading. Each reduction also refuses a result that is no finite number, a
+// diameter above kMaxLabDiameter or a percent finer above kMaxPercentFiner.
 void validate_lab_readings(const std::vector<LabReading>& readings, const LabSpecimen& specimen);
 
 }  // namespace sedem

@@ -8,6 +8,8 @@
 #include <optional>
 #include <sstream>
 
+#include "core/model/shortened.h"
+
 namespace sedem {
 
 namespace {
@@ -54,6 +56,32 @@ bool blank(const std::string& line) {
   return line.find_first_not_of(" \t\r") == std::string::npos;
 }
 
+// One line, ended by LF, CRLF or a lone CR (as old Mac spreadsheets write): false at the end
+// of the input. A line longer than kMaxLabLineBytes is refused rather than read on.
+bool next_line(std::istream& in, std::string& line, std::size_t number) {
+  line.clear();
+  std::streambuf* buffer = in.rdbuf();
+  if (!buffer) return false;
+  using traits = std::char_traits<char>;
+  for (;;) {
+    const auto c = buffer->sbumpc();
+    if (traits::eq_int_type(c, traits::eof())) {
+      in.setstate(std::ios::eofbit);
+      return !line.empty();
+    }
+    if (c == '\n') return true;
+    if (c == '\r') {
+      if (traits::eq_int_type(buffer->sgetc(), '\n')) buffer->sbumpc();
+      return true;
+    }
+    if (line.size() >= kMaxLabLineBytes)
+      throw LabCsvError(number, "",
+                        "a line longer than " + std::to_string(kMaxLabLineBytes) +
+                            " characters: not a readings file");
+    line += traits::to_char_type(c);
+  }
+}
+
 }  // namespace
 
 LabCsvError::LabCsvError(std::size_t line, const std::string& column, const std::string& why)
@@ -63,13 +91,15 @@ LabCsvError::LabCsvError(std::size_t line, const std::string& column, const std:
 
 std::vector<std::vector<double>> read_numeric_csv(std::istream& in,
                                                   const std::vector<std::string>& required,
-                                                  const std::vector<std::string>& optional) {
+                                                  const std::vector<std::string>& optional,
+                                                  std::vector<std::size_t>* lines) {
+  if (lines) lines->clear();
   std::vector<std::string> names = required;
   names.insert(names.end(), optional.begin(), optional.end());
   std::string line;
   std::size_t number = 0;
   std::vector<std::string> header;
-  while (header.empty() && std::getline(in, line)) {
+  while (header.empty() && next_line(in, line, number + 1)) {
     ++number;
     // A spreadsheet's "CSV UTF-8" starts with a byte order mark.
     if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
@@ -85,9 +115,14 @@ std::vector<std::vector<double>> read_numeric_csv(std::istream& in,
       throw LabCsvError(number, names[k], "missing from the header");
   }
   std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
+  while (next_line(in, line, number + 1)) {
     ++number;
     if (blank(line)) continue;
+    if (rows.size() == kMaxLabRows)
+      throw LabCsvError(number, "",
+                        "more than " + std::to_string(kMaxLabRows) +
+                            " readings; a laboratory test has a few dozen: is this the right "
+                            "file?");
     const auto cells = split(line);
     std::vector<double> v(names.size(), std::numeric_limits<double>::quiet_NaN());
     for (std::size_t k = 0; k < names.size(); ++k) {
@@ -97,18 +132,40 @@ std::vector<std::vector<double>> read_numeric_csv(std::istream& in,
       const char* end = text.data() + text.size();
       auto [ptr, ec] = std::from_chars(text.data(), end, v[k]);
       if (ec != std::errc() || ptr != end || text.empty())
-        throw LabCsvError(number, names[k], "'" + text + "' is not a number");
+        throw LabCsvError(number, names[k], "'" + shortened(text) + "' is not a number");
+      // "nan" or "inf" parse, but are no reading: refused here rather than taken for a
+      // missing value (an absent optional column) or carried into the results.
+      if (!std::isfinite(v[k]))
+        throw LabCsvError(number, names[k], "'" + shortened(text) + "' is not a finite number");
     }
     rows.push_back(std::move(v));
+    if (lines) lines->push_back(number);
   }
+  if (rows.empty())
+    throw LabCsvError(number, "", "no readings: the file holds a header and no data row");
   return rows;
+}
+
+void check_lab_time_min(std::size_t line, double time_min) {
+  if (!(time_min > 0 && time_min <= kMaxLabTimeMin)) {
+    std::ostringstream why;
+    why << time_min << " is out of range; allowed (0, " << kMaxLabTimeMin
+        << "] min (a test's readings end within days)";
+    throw LabCsvError(line, "time_min", why.str());
+  }
 }
 
 std::vector<LabReading> read_lab_readings_csv(std::istream& in) {
   std::vector<LabReading> readings;
-  for (const auto& v : read_numeric_csv(in, {"time_min", "reading_g_per_l", "temperature_c"},
-                                        {"composite_correction_g_per_l"}))
-    readings.push_back({v[0] * 60.0, v[1], v[2], std::isnan(v[3]) ? 0.0 : v[3]});
+  std::vector<std::size_t> lines;
+  const auto rows = read_numeric_csv(in, {"time_min", "reading_g_per_l", "temperature_c"},
+                                     {"composite_correction_g_per_l"}, &lines);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto& v = rows[i];
+    check_lab_time_min(lines[i], v[0]);
+    // NaN here only for the optional column the header lacks: no correction.
+    readings.push_back({v[0] * 60.0, v[1], v[2], std::isnan(v[3]) ? 0.0 : v[3], lines[i]});
+  }
   return readings;
 }
 

@@ -7,8 +7,10 @@
 #include "core/instruments/buoyancy_sphere.h"
 #include "core/instruments/hydrometer.h"
 #include "core/instruments/pipette.h"
+#include "core/instruments/plausibility.h"
 #include "core/sample/grading_curve.h"
 #include "core/sample/placement.h"
+#include "core/sample/sample_builder.h"
 #include "core/sample/sample_checks.h"
 #include "core/scene/scene.h"
 #include "core/scene/scene_loader.h"
@@ -160,6 +162,61 @@ void check_instruments(const Scene& scene, const Checker& check) {
   }
 }
 
+// An enabled instrument whose sampled volume holds on average less than one simulated particle
+// at the start reads noise alone: refused, naming the key that sizes the volume, or the
+// particle count when that key was left at its default. Fewer than kDoubtfulSampled is only
+// doubtful: a warning when the run starts (setup_doubts).
+void check_sampled_volumes(const Scene& scene, const SceneOrigins& origins, const Checker& check) {
+  TestSetup setup;
+  setup.cylinder = scene.cylinder;
+  setup.instruments = scene.instruments;
+  const double count =
+      double(plan_sample(SampleSetup{scene.sample, scene.cylinder}).simulated_total);
+  for (const auto& v : sampled_volumes(setup, count)) {
+    if (v.particles >= kMinSampled) continue;
+    const bool own_key = origins.at.count(v.key) > 0;
+    const std::string key = own_key ? v.key : "sample.simulated_count";
+    // Each key scales the share linearly: the pipette's volume, the sphere's diameter, the
+    // column's height inversely (the bulb's share of it).
+    const double need = kMinSampled / v.particles;
+    std::string allowed;
+    if (!own_key)
+      allowed = ">= " + number(std::ceil(count * need));
+    else if (v.test == "pipette")
+      allowed = ">= " + number(scene.instruments.pipette_volume * need * 1e6) + " mL";
+    else if (v.test == "buoyancy")
+      allowed = ">= " + number(scene.instruments.sphere_diameter * need * 100) + " cm";
+    else
+      allowed = "<= " + number(scene.cylinder.height / need) + " m";
+    check.fail(key, "leaves about " + number(v.particles) + " of the " + number(count) +
+                        " simulated particles in the " + v.test +
+                        "'s sampled volume at the start (" + number(100 * v.share) +
+                        " % of the section): its readings would be noise alone; allowed for "
+                        "this scene: " +
+                        allowed + " (or instruments." + v.test + ".enabled = false)");
+  }
+}
+
+// The most coasting windows a run may take (each free grain syncs at least every
+// integrator.max_coast_s): hours of computing; a million particles over 24 h at the default
+// 60 s take 1.4e9. More is no progress: the engine would spend hours at t = 0 between two
+// looks for a stop (a window far shorter than the test).
+inline constexpr double kMaxCoastWindows = 1e10;
+
+void check_coasting(const Scene& scene, const Checker& check) {
+  const auto& in = scene.integrator;
+  if (in.method != "exponential" || !in.local_steps || !(scene.end_time > 0)) return;
+  const double count =
+      double(plan_sample(SampleSetup{scene.sample, scene.cylinder}).simulated_total);
+  const double windows = count * scene.end_time / in.max_coast;
+  if (windows > kMaxCoastWindows)
+    check.fail("integrator.max_coast_s",
+               "makes " + number(count) + " particles take about " + number(windows) +
+                   " coasting windows over run.end_time_s = " + check.value("run.end_time_s") +
+                   ": hours of computing with no progress; allowed for this scene: >= " +
+                   number(count * scene.end_time / kMaxCoastWindows) + " s");
+}
+
 }  // namespace
 
 void check_scene(const Scene& scene, const SceneOrigins& origins) {
@@ -211,6 +268,8 @@ void check_scene(const Scene& scene, const SceneOrigins& origins) {
                "integrator.retire_below_instruments = true, an instrument enabled): grains "
                "that passed each other would reach a contact bed overlapping");
   check_instruments(scene, check);
+  check_sampled_volumes(scene, origins, check);
+  check_coasting(scene, check);
 }
 
 }  // namespace sedem

@@ -108,13 +108,6 @@ std::string Schema::nearest(const std::string& key) const {
   return best;
 }
 
-std::string shortened(const std::string& text, std::size_t longest) {
-  if (text.size() <= longest) return text;
-  const std::size_t tail = longest / 4, head = longest - tail;
-  return text.substr(0, head) + " ... " + text.substr(text.size() - tail) + " (" +
-         std::to_string(text.size()) + " characters)";
-}
-
 std::string format_user_value(const Param& p) {
   std::ostringstream os;
   os.precision(12);

@@ -7,6 +7,8 @@
 #include <variant>
 #include <vector>
 
+#include "core/model/shortened.h"
+
 namespace sedem {
 
 // Every scene key in one table: its dotted name, where its value lives, the unit the user
@@ -74,10 +76,6 @@ const std::string& current_choice(const Param& p, const std::string& value);
 
 // A value as the user sees it (user units), for printing and run.json.
 std::string format_user_value(const Param& p);
-
-// A value's text in a message: whole when short, else its first and last characters and its
-// length, so that a list of ten thousand values does not bury the message it is part of.
-std::string shortened(const std::string& text, std::size_t longest = 120);
 
 // A value in the unit the user writes it: "1e-06, 10] Pa*s" style ranges, "a, b" choices.
 std::string range_text(const Param& p);

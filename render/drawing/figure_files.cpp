@@ -10,6 +10,7 @@
 #include <cairo-pdf.h>
 #include <cairo.h>
 
+#include "render/atomic_write.h"
 #include "render/drawing/cairo_painter.h"
 #include "render/drawing/svg_document.h"
 
@@ -18,8 +19,7 @@ namespace {
 
 void check(cairo_status_t status, const std::filesystem::path& file) {
   if (status != CAIRO_STATUS_SUCCESS)
-    throw std::runtime_error("cannot write " + file.string() + ": " +
-                             cairo_status_to_string(status));
+    throw WriteError("cannot write " + file.string() + ": " + cairo_status_to_string(status));
 }
 
 // Device pixels per logical pixel for a PNG of `output.width_px` pixels.
@@ -45,16 +45,25 @@ cairo_surface_t* raster_surface(const Drawing& d, double scale) {
   return surface;
 }
 
-void write_png(const Drawing& d, const std::filesystem::path& file, double scale) {
+// cairo's output callback onto a stream.
+cairo_status_t to_stream(void* closure, const unsigned char* data, unsigned int length) {
+  auto& out = *static_cast<std::ostream*>(closure);
+  out.write(reinterpret_cast<const char*>(data), std::streamsize(length));
+  return out ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
+}
+
+void write_png(const Drawing& d, std::ostream& out, const std::filesystem::path& file,
+               double scale) {
   cairo_surface_t* surface = raster_surface(d, scale);
-  const auto status = cairo_surface_write_to_png(surface, file.c_str());
+  const auto status = cairo_surface_write_to_png_stream(surface, to_stream, &out);
   cairo_surface_destroy(surface);
   check(status, file);
 }
 
-void write_pdf(const Drawing& d, const std::filesystem::path& file, double scale) {
+void write_pdf(const Drawing& d, std::ostream& out, const std::filesystem::path& file,
+               double scale) {
   cairo_surface_t* surface =
-      cairo_pdf_surface_create(file.c_str(), d.width * scale, d.height * scale);
+      cairo_pdf_surface_create_for_stream(to_stream, &out, d.width * scale, d.height * scale);
   if (!d.title.empty())
     cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, d.title.c_str());
   cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "sedem");
@@ -69,14 +78,11 @@ void write_pdf(const Drawing& d, const std::filesystem::path& file, double scale
   check(status, file);
 }
 
-void write_svg(const Drawing& d, const std::filesystem::path& file, double scale) {
+void write_svg(const Drawing& d, std::ostream& out, double scale) {
   std::ostringstream w, h;
   w << std::lround(d.width * scale) << "pt";
   h << std::lround(d.height * scale) << "pt";
-  std::ofstream out(file, std::ios::binary);
   out << svg_document(d, w.str(), h.str());
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + file.string());
 }
 
 }  // namespace
@@ -125,9 +131,13 @@ std::vector<std::filesystem::path> write_drawing(const Drawing& drawing,
   for (auto format : output.formats) {
     auto file = base;
     file += std::string(".") + extension(format);
-    if (format == FigureFormat::png) write_png(drawing, file, png_scale(drawing, output));
-    if (format == FigureFormat::svg) write_svg(drawing, file, point_scale(drawing, output));
-    if (format == FigureFormat::pdf) write_pdf(drawing, file, point_scale(drawing, output));
+    // Through a temporary file: a reader never sees half a figure, a full disk throws
+    // WriteError and leaves nothing behind.
+    write_atomically(file, [&](std::ostream& out) {
+      if (format == FigureFormat::png) write_png(drawing, out, file, png_scale(drawing, output));
+      if (format == FigureFormat::svg) write_svg(drawing, out, point_scale(drawing, output));
+      if (format == FigureFormat::pdf) write_pdf(drawing, out, file, point_scale(drawing, output));
+    });
     written.push_back(file);
   }
   return written;

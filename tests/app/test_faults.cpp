@@ -269,6 +269,82 @@ TEST(Faults, ReduceRefusesWhatItCannotComputeAndReadsSpreadsheetCsv) {
   EXPECT_NE(full.output.find("No space left"), std::string::npos) << full.output;
 }
 
+// 6. Laboratory files (issue 26, item 6): times, readings and corrections range-checked with
+// the line and column named; any line end; no readings, too many rows and flags out of range
+// refused; --out only a regular file or a new path; a full disk is exit 4 with no half file.
+TEST(Faults, LabFilesAreCheckedReadWithAnyLineEndAndWrittenWhole) {
+  const fs::path dir = fresh("lab_files");
+  fs::create_directories(dir);
+  const std::string header = "time_min,reading_g_per_l,temperature_c,composite_correction_g_per_l";
+  const auto file = [&](const std::string& name, const std::string& text) {
+    write_text(dir / name, text);
+    return (dir / name).string();
+  };
+  const std::string plain = file("plain.csv", header + "\n2,42,22,5\n5,35,22,5\n15,28,22,5\n");
+  auto ok = test::run_sedem("reduce " + plain);
+  ASSERT_EQ(ok.status, 0) << ok.output;
+  // CR only (old spreadsheets) and CRLF: the same three rows.
+  for (const char* eol : {"\r", "\r\n"}) {
+    auto r =
+        test::run_sedem("reduce " + file("eol.csv", header + eol + "2,42,22,5" + eol + "5,35,22,5" +
+                                                        eol + "15,28,22,5" + eol));
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(r.output, ok.output);
+  }
+  expect_refused(test::run_sedem("reduce " + file("header.csv", header + "\n")), {"no readings"});
+  expect_refused(test::run_sedem("reduce " + file("inf.csv", header + "\n1e308,42,22,5\n")),
+                 {"line 2", "time_min", "out of range"});
+  expect_refused(test::run_sedem("reduce " + file("tiny.csv", header + "\n1e-300,42,22,5\n")),
+                 {"diameter_m", "time_min", "line 2"});
+  expect_refused(test::run_sedem("reduce " + file("nan.csv", header + "\n2,42,22,nan\n")),
+                 {"line 2", "composite_correction_g_per_l", "not a finite number"});
+  expect_refused(test::run_sedem("reduce " + file("nan_reading.csv", header + "\n2,NaN,22,5\n")),
+                 {"line 2", "reading_g_per_l"});
+  std::string many = header + "\n";
+  for (int i = 1; i <= 10001; ++i) many += std::to_string(i) + ",20,20,1\n";
+  expect_refused(test::run_sedem("reduce " + file("many.csv", many)), {"more than 10000"});
+  // A long bad value is cut in the message.
+  auto long_value = test::run_sedem(
+      "reduce " + file("long.csv", header + "\n2," + std::string(5000, 'x') + ",22,5\n"));
+  EXPECT_EQ(long_value.status, 2);
+  EXPECT_LT(long_value.output.size(), 1000u) << long_value.output.size();
+  EXPECT_NE(long_value.output.find("5000 characters"), std::string::npos) << long_value.output;
+  // Flags out of range are named.
+  const std::string pipette = file("pipette.csv", "time_min,dry_mass_g\n1,1.4\n4,1.1\n16,0.9\n");
+  for (const char* t : {"nan", "200", "-5"})
+    expect_refused(test::run_sedem("invert " + pipette + " --test pipette --temperature-c " + t +
+                                   " --out " + (dir / "inv").string()),
+                   {"--temperature-c", "out of range"});
+  // --out: a folder, a pipe, a device are refused before anything is written.
+  fs::create_directories(dir / "a_folder");
+  ASSERT_EQ(std::system(("mkfifo " + (dir / "a_fifo").string()).c_str()), 0);
+  for (const auto& out :
+       {(dir / "a_folder").string(), (dir / "a_fifo").string(), std::string("/dev/full")}) {
+    auto r = test::run_sedem("reduce " + plain + " --out " + out);
+    EXPECT_EQ(r.status, 3) << out << "\n" << r.output;
+    EXPECT_NE(r.output.find("regular file or a new path"), std::string::npos) << r.output;
+  }
+  EXPECT_TRUE(fs::is_character_file("/dev/full"));
+  EXPECT_TRUE(fs::is_fifo(dir / "a_fifo"));
+  // A full disk (no file may grow: ulimit -f 0, SIGXFSZ ignored so that writes fail with
+  // EFBIG): exit 4, and no empty or temporary file left.
+  const fs::path full = dir / "full";
+  auto r = test::run_sedem(
+      "--version > /dev/null; ( trap '' XFSZ; ulimit -f 0; exec " SEDEM_EXE " invert " + pipette +
+      " --test pipette --replicas 0 -q --out " + full.string() + " )");
+  EXPECT_EQ(r.status, 4) << r.output;
+  for (const auto& e : fs::directory_iterator(full)) {
+    EXPECT_GT(fs::file_size(e.path()), 0u) << e.path();
+    EXPECT_NE(e.path().extension(), ".tmp") << e.path();
+  }
+  r = test::run_sedem("--version > /dev/null; ( trap '' XFSZ; ulimit -f 0; exec " SEDEM_EXE
+                      " reduce " +
+                      plain + " --out " + (dir / "reduced.csv").string() + " )");
+  EXPECT_EQ(r.status, 4) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "reduced.csv"));
+  EXPECT_FALSE(fs::exists(dir / "reduced.csv.tmp"));
+}
+
 // 7. Values the instruments cannot use are refused at the scene check: exit 2, key, value.
 TEST(Faults, ValuesTheInstrumentsCannotUseAreRefusedAtTheSceneCheck) {
   const fs::path out = fresh("late");
