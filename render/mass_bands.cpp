@@ -91,7 +91,10 @@ void draw_panel(PixelCanvas& canvas, const MassBandsFigure& f, const ColumnSampl
   const double side = g.inset_side;
   for (const auto& inset : f.insets) {
     const double fixed = inset.magnification > 0 ? side / (inset.magnification * g.scale) : 0;
-    const auto w = zoom_window(p, f.height, f.width, inset, fixed);
+    auto w = zoom_window(p, f.height, f.width, inset, fixed);
+    // At the paper's magnification a run of a few thousand particles leaves the window all but
+    // empty: then it widens until about `grains` show, and the printed magnification says so.
+    if (fixed > 0 && w.grains < kFewestZoomGrains) w = zoom_window(p, f.height, f.width, inset);
     const double zoom = side / w.side;  // pixels per metre inside the inset
     double inset_y0 = 0;
     switch (inset.where) {

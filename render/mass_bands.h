@@ -40,9 +40,10 @@ struct ColumnSample {
 // A zoom window on one third of the column (top, middle or bottom), drawn beside it. It is
 // placed on the grains there (centred on their median position). With a `magnification`
 // (against the column's own scale in the picture, as the paper gives its zooms: 25x) it is
-// that much enlarged; without one it is sized to hold about `grains` of them, between 12
-// largest diameters and the column's width. Its magnification and the grains it holds are
-// printed beside it. With no grain in its third it says so.
+// that much enlarged, unless that window would hold fewer than kFewestZoomGrains (a run of
+// far fewer particles than the paper's); otherwise it is sized to hold about `grains` of
+// them, between 12 largest diameters and the column's width. Its magnification and the grains it
+// holds are printed beside it. With no grain in its third it says so.
 struct ColumnInset {
   enum class Where { top, middle, bottom } where;
   double magnification = 0;  // 0: from `grains`
@@ -57,6 +58,9 @@ struct ZoomWindow {
 // `side` (m), when positive, fixes the window's side instead of `inset.grains`.
 ZoomWindow zoom_window(const ParticleDiscs& particles, double height, double width,
                        const ColumnInset& inset, double side = 0);
+
+// A zoom at a fixed magnification that would hold fewer grains than this is widened instead.
+inline constexpr std::size_t kFewestZoomGrains = 5;
 
 // Discs smaller than this many pixels across are drawn this size, so that the finest show;
 // every larger one at its true size.

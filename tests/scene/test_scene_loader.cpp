@@ -50,6 +50,20 @@ TEST(SceneLoader, AMessageCutsALongValue) {
   EXPECT_EQ(shortened("short"), "short");
 }
 
+TEST(SceneLoader, FigureFormatsAreAnyOfPngSvgPdf) {
+  // A TOML list or a comma-separated string, repeats dropped, order kept.
+  EXPECT_EQ(parse_scene("[output]\nfigure_formats = [\"pdf\", \"png\", \"pdf\"]\n", "f.toml")
+                .output.figure_formats,
+            "pdf,png");
+  EXPECT_EQ(parse_scene("", "f.toml", {"output.figure_formats=png, svg"}).output.figure_formats,
+            "png,svg");
+  const std::string e = error_of("[output]\nfigure_formats = [\"png\", \"jpeg\"]\n");
+  EXPECT_NE(e.find("output.figure_formats"), std::string::npos) << e;
+  EXPECT_NE(e.find("'jpeg' is not one of: png, svg, pdf"), std::string::npos) << e;
+  EXPECT_NE(error_of("[output]\nfigure_formats = []\n").find("at least one of"), std::string::npos);
+  EXPECT_NE(error_of("", {"output.figure_width_px=10"}).find("[200, 20000]"), std::string::npos);
+}
+
 TEST(SceneLoader, UnknownKeySuggestsTheNearest) {
   const std::string e = error_of("[fluid]\nviscosty = 1e-3\n");
   EXPECT_NE(e.find("unknown key 'fluid.viscosty'"), std::string::npos) << e;
