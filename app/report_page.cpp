@@ -24,6 +24,7 @@ td.num { text-align: right; font-variant-numeric: tabular-nums; }
 .status.partial { background: #ffe1c2; color: #7a3000; }
 .banner { border-left: 5px solid #d9480f; background: #fff3e6; padding: 8px 14px; margin: .8em 0; }
 .note { color: #57606a; font-size: .93em; }
+.warnings { border-left: 5px solid #bf8700; background: #fff8c5; padding: 6px 14px; margin: .8em 0; }
 figure { margin: 1em 0 2.2em; }
 figure img { max-width: 100%; height: auto; border: 1px solid #e3e7eb; }
 figcaption { color: #57606a; font-size: .93em; margin-top: .3em; }

@@ -131,6 +131,19 @@ std::string results_html(const json& record) {
          "itself gets wrong). \"-\": no number, for the reason in the note.</p>\n";
 }
 
+// What makes the results doubtful though every value is in range (run.json's "warnings"),
+// above the results they qualify; nothing when there is none.
+std::string warnings_html(const json& record) {
+  const json warnings = member(record, "warnings");
+  if (!warnings.is_array() || warnings.empty()) return "";
+  std::string html = "<div class=\"warnings\" id=\"warnings\"><strong>Warnings</strong><ul>\n";
+  for (const auto& w : warnings) {
+    const json message = w.is_object() ? member(w, "message") : w;
+    html += "<li>" + html_escape(text_of(message)) + "</li>\n";
+  }
+  return html + "</ul></div>\n";
+}
+
 // Links to the run's data: CSVs, ParaView series (with the count of files each holds), the
 // record; the files of other folders counted.
 std::string files_html(const std::vector<std::string>& files) {
@@ -211,8 +224,8 @@ std::string run_report_html(const json& record, const fs::path& dir) {
   if (!frames.empty()) body += "<a href=\"#frames\">frames</a>";
   body += "<a href=\"#files\">files</a><a href=\"#scene\">scene</a></nav>\n";
   body += status_html(record, dir) + facts_html(record);
-  body +=
-      "<section id=\"results\">\n<h2>Error and bias</h2>\n" + results_html(record) + "</section>\n";
+  body += "<section id=\"results\">\n<h2>Error and bias</h2>\n" + warnings_html(record) +
+          results_html(record) + "</section>\n";
   if (!figures.empty()) {
     body += "<section id=\"figures\">\n<h2>Figures</h2>\n";
     for (const auto& f : figures) body += figure_html(f);

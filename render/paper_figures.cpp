@@ -35,9 +35,11 @@ Figure sample_grid(std::string title, std::vector<Plot> panels) {
   Figure f;
   f.title = std::move(title);
   f.columns = std::min<int>(3, std::max<int>(1, int(panels.size())));
-  f.panel_width = 520;  // the legend beside the plot area
-  f.panel_height = 320;
   f.panels = std::move(panels);
+  // The legend beside the plot area; a lone panel (one run) wider, so that its plot keeps
+  // most of the picture.
+  f.panel_width = f.panels.size() == 1 ? 700 : 520;
+  f.panel_height = 320;
   return f;
 }
 

@@ -54,6 +54,18 @@ TEST(RunReport, ShowsAbsentFiguresAsADashWithTheirReason) {
   EXPECT_NE(page.find("1:16 (75.5 s)"), std::string::npos);
 }
 
+TEST(RunReport, ShowsTheRunsWarningsAboveItsResults) {
+  auto record = record_of("complete");
+  EXPECT_EQ(app::run_report_html(record, "out/demo").find("id=\"warnings\""), std::string::npos);
+  record["warnings"] = {
+      {{"code", "few_particles"}, {"message", "the pipette's volume holds 3 particles <of 1500>"}}};
+  const std::string page = app::run_report_html(record, "out/demo");
+  const auto warnings = page.find("id=\"warnings\"");
+  ASSERT_NE(warnings, std::string::npos);
+  EXPECT_NE(page.find("holds 3 particles &lt;of 1500&gt;", warnings), std::string::npos);
+  EXPECT_LT(warnings, page.find("<table class=\"results\""));
+}
+
 TEST(RunReport, MarksARunThatDidNotCompleteAsPartial) {
   const std::string page = app::run_report_html(record_of("interrupted"), "out/demo");
   EXPECT_NE(page.find("partial: interrupted"), std::string::npos);
