@@ -18,7 +18,8 @@ namespace sedem::render {
 namespace {
 
 constexpr int kTitleHeight = 34;
-constexpr int kScaleWidth = 110;  // the grey scale's strip on the right
+constexpr int kScaleWidth = 110;       // the grey scale's strip on the right
+constexpr double kSeamOverlap = 0.75;  // pixels one band reaches into the next
 constexpr PixelCanvas::Rgb kDiscColor = {25, 25, 25};
 
 std::string format(const char* fmt, double v) {
@@ -80,7 +81,10 @@ void draw_panel(PixelCanvas& canvas, const MassBandsFigure& f, const ColumnSampl
   for (std::size_t k = 0; k < bands.size(); ++k) {
     const unsigned char v = grey_of(bands[k], full_scale);
     const double top = g.col_y1 - double(k) * band_h;
-    canvas.rectangle(g.col_x0, top - band_h, g.col_x0 + col_w, top, {v, v, v});
+    // Each band reaches a little into the next (drawn over it), or anti-aliasing leaves a
+    // light seam between two dark bands in every renderer.
+    const double bottom = k + 1 < bands.size() ? top - band_h - kSeamOverlap : top - band_h;
+    canvas.rectangle(g.col_x0, bottom, g.col_x0 + col_w, top, {v, v, v});
   }
   canvas.frame(g.col_x0, g.col_y0, g.col_x0 + col_w, g.col_y1);
   draw_depth_axis(canvas, f, g);
@@ -139,7 +143,8 @@ void draw_grey_scale(PixelCanvas& canvas, double x0, double y0, double h, double
   for (int i = 0; i < steps; ++i) {
     const double fraction = full_scale * (i + 0.5) / steps;
     const unsigned char v = grey_of(fraction, full_scale);
-    canvas.rectangle(x0, y0 + i * step_h, x0 + w, y0 + (i + 1) * step_h, {v, v, v});
+    canvas.rectangle(x0, y0 + i * step_h, x0 + w,
+                     y0 + (i + 1) * step_h + (i + 1 < steps ? kSeamOverlap : 0), {v, v, v});
   }
   canvas.frame(x0, y0, x0 + w, y0 + h);
   for (int i = 0; i <= 4; ++i) {
