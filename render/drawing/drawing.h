@@ -2,6 +2,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -78,7 +79,12 @@ struct Drawing {
   std::string title;             // the document's title (SVG <title>, PDF metadata)
   std::vector<Shape> shapes;     // painted in order on a white ground
 
-  void add(Shape shape) { shapes.push_back(std::move(shape)); }
+  // Built in place in the list: no Shape temporary to move (GCC 12 warns, wrongly, that a
+  // moved variant's members may be uninitialised).
+  template <class T>
+  void add(T shape) {
+    shapes.emplace_back(std::in_place_type<T>, std::move(shape));
+  }
   void line(Point a, Point b, Stroke stroke = {}) { add(Polyline{{a, b}, std::move(stroke)}); }
   void rectangle(double x0, double y0, double x1, double y1, Rgba fill) {
     add(Polygon{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, fill, false, {}});
