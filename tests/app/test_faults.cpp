@@ -226,7 +226,16 @@ TEST(Faults, ADamagedSeriesIsRefusedNamingTheFile) {
   const fs::path vtp = dir / "particles/particles_000001.vtp";
   const std::string data = text_of(vtp);
   write_text(vtp, data.substr(0, data.size() / 2));
-  expect_refused(test::run_sedem("render " + dir.string()), {"particles_000001.vtp"});
+  expect_refused(test::run_sedem("render " + dir.string()), {"particles_000001.vtp", "damaged"});
+  // Cut at its very end, or bytes of its compressed data changed: damaged too, never "no
+  // point array" alone.
+  write_text(vtp, data.substr(0, data.size() - 20));
+  expect_refused(test::run_sedem("render " + dir.string()), {"particles_000001.vtp", "damaged"});
+  std::string changed = data;
+  for (std::size_t i = changed.size() / 2; i < changed.size() / 2 + 300; ++i)
+    changed[i] = char(changed[i] * 7 + 3);
+  write_text(vtp, changed);
+  expect_refused(test::run_sedem("render " + dir.string()), {"particles_000001.vtp", "damaged"});
   fs::remove(vtp);
   expect_refused(test::run_sedem("render " + dir.string()), {"particles_000001.vtp"});
   write_text(vtp, data);
