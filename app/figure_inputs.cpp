@@ -234,7 +234,10 @@ render::FigureOutput figure_output(const OutputConfig& output) {
 
 void write_figures(const std::vector<LabelledResults>& runs, const std::filesystem::path& dir) {
   if (runs.empty()) return;
-  const render::FigureOutput& svg = runs.front().figures;
+  render::FigureOutput svg = runs.front().figures;
+  // One run drawn from a partial one makes the figure partial.
+  for (const auto& r : runs)
+    if (!r.figures.partial_note.empty()) svg.partial_note = r.figures.partial_note;
   if (auto in = fig11_input(runs); !in.samples.empty())
     render::write_mass_bands(in, dir / "fig11_column", svg);
   if (auto in = fig12_input(runs); !in.samples.empty()) render::write_fig12(in, dir, svg);

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/exit_codes.h"
+#include "app/progress.h"
 #include "app/run_record.h"
 #include "core/invert/invert_input.h"
 #include "core/lab/hydrometer_reduction.h"
@@ -192,7 +193,11 @@ int run_invert(const InvertOptions& o) {
   options.bootstrap = o.replicas;
   options.coverage = o.coverage;
   options.seed = o.seed;
+  // A long inversion (many readings, a fine grid) says how far it is, as a run does.
+  StageProgress progress("invert", o.quiet);
+  options.progress = [&](const char* stage, double fraction) { progress.update(stage, fraction); };
   const auto curve = invert::invert_readings(test_setup(scene), test, data, options);
+  progress.done();
 
   // Every output through a temporary file, its write and close checked (a full disk: exit 4,
   // no half file); a partial run's say so.

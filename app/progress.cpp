@@ -24,6 +24,16 @@ std::string format(const char* fmt, auto... args) {
   return text;
 }
 
+// One progress line: redrawn in place on a terminal (padded to `width` with spaces, so that no
+// character of a longer line before it stays), a line of its own in a log.
+void print_line(std::FILE* out, bool tty, int width, const std::string& text) {
+  if (tty)
+    std::fprintf(out, "\r%-*s", width, text.c_str());
+  else
+    std::fprintf(out, "%s\n", text.c_str());
+  std::fflush(out);
+}
+
 }  // namespace
 
 std::string clock_text(double seconds) {
@@ -109,18 +119,51 @@ std::string Progress::line(double wall, double simulated_time, double particle_s
 }
 
 void Progress::print(double simulated_time, double particle_steps) {
-  const std::string text = line(wall_seconds(), simulated_time, particle_steps);
-  if (tty_)
-    // Pad to the previous line's width with spaces, then back: no trailing characters.
-    std::fprintf(out_, "\r%-*s", columns_ - 1, text.c_str());
-  else
-    std::fprintf(out_, "%s\n", text.c_str());
-  std::fflush(out_);
+  print_line(out_, tty_, columns_ - 1, line(wall_seconds(), simulated_time, particle_steps));
   printed_ = true;
 }
 
 void Progress::done() {
   if (!quiet_ && printed_ && tty_) std::fputc('\n', out_);
+}
+
+StageProgress::StageProgress(std::string what, bool quiet, double after_s, double log_interval_s)
+    : StageProgress(std::move(what), quiet, stderr, isatty(STDERR_FILENO) != 0, after_s,
+                    log_interval_s) {}
+
+StageProgress::StageProgress(std::string what, bool quiet, std::FILE* out, bool tty, double after_s,
+                             double log_interval_s)
+    : what_(std::move(what)),
+      quiet_(quiet),
+      out_(out),
+      tty_(tty),
+      after_(after_s),
+      log_interval_(log_interval_s),
+      start_(std::chrono::steady_clock::now()) {}
+
+void StageProgress::update(const std::string& stage, double fraction) {
+  update_at(std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(), stage,
+            fraction);
+}
+
+void StageProgress::update_at(double wall, const std::string& stage, double fraction) {
+  if (quiet_ || wall < after_) return;
+  const bool new_stage = stage != last_stage_;
+  last_stage_ = stage;
+  if (last_print_ >= 0 && !new_stage && wall - last_print_ < (tty_ ? 0.2 : log_interval_)) return;
+  last_print_ = wall;
+  print_line(out_, tty_, 79, line(wall, stage, fraction));
+  printed_ = true;
+}
+
+void StageProgress::done() {
+  if (!quiet_ && printed_ && tty_) std::fputc('\n', out_);
+}
+
+std::string StageProgress::line(double wall, const std::string& stage, double fraction) const {
+  const std::string text = format("sedem: %s: %s %.0f%% (wall %s)", what_.c_str(), stage.c_str(),
+                                  100 * std::clamp(fraction, 0.0, 1.0), clock_text(wall).c_str());
+  return text.substr(0, 79);
 }
 
 std::string run_summary(const nlohmann::json& results, double wall_time,

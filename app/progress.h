@@ -49,6 +49,36 @@ class Progress {
   bool printed_ = false;
 };
 
+// Progress of a computation with stages but no simulated time (an inversion: the fit, the
+// bounds, the band), on stderr once it has run `after_s` seconds: quick ones print nothing.
+// On a terminal one line redrawn in place; in a log a plain line at most every
+// `log_interval`, and one at each new stage. Quiet prints nothing.
+class StageProgress {
+ public:
+  StageProgress(std::string what, bool quiet, double after_s = 2.0, double log_interval_s = 10.0);
+  // For tests: where to print and whether it is a terminal.
+  StageProgress(std::string what, bool quiet, std::FILE* out, bool tty, double after_s = 2.0,
+                double log_interval_s = 10.0);
+  // `fraction` of `stage` done (0-1).
+  void update(const std::string& stage, double fraction);
+  // The same at `wall` seconds since the start (what update() calls).
+  void update_at(double wall, const std::string& stage, double fraction);
+  void done();
+  // "sedem: invert: band 42% (wall 0:05)"
+  std::string line(double wall, const std::string& stage, double fraction) const;
+
+ private:
+  std::string what_;
+  bool quiet_;
+  std::FILE* out_;
+  bool tty_;
+  double after_, log_interval_;
+  std::chrono::steady_clock::time_point start_;
+  double last_print_ = -1;
+  std::string last_stage_;
+  bool printed_ = false;
+};
+
 // "h:mm:ss" or "m:ss"; "--:--" when unknown.
 std::string clock_text(double seconds);
 

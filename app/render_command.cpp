@@ -29,14 +29,23 @@ struct RenderFailure : std::runtime_error {
   int status;
 };
 
+// What every output of `render --partial` says of a run that did not complete.
+const char* kPartialNote =
+    "partial: redrawn from a run that did not complete; its readings stop where it did";
+
 // report.html again, from the record and what the folder now holds; run.json lists the files
-// anew when they changed (a folder written before the report was).
-void update_report(nlohmann::json record, const fs::path& dir) {
+// anew when they changed (a folder written before the report was), and says when its outputs
+// were redrawn as partial.
+void update_report(nlohmann::json record, const fs::path& dir, bool partial) {
   const nlohmann::json listed = record.value("files", nlohmann::json());
   record["files"] = run_files(dir);
   write_run_report(record, dir);
   record["files"] = run_files(dir);
-  if (record["files"] == listed) return;
+  if (partial) {
+    record["partial"] = true;
+    record["partial_note"] = kPartialNote;
+  }
+  if (record["files"] == listed && !partial) return;
   write_atomically(dir / "run.json", [&](std::ostream& out) { out << record.dump(2) << '\n'; });
 }
 
@@ -49,6 +58,7 @@ LabelledResults render_one(const fs::path& dir, bool quiet, bool partial,
                         exit_code::invalid_scene);
   Scene scene;
   nlohmann::json record;
+  bool incomplete_run_taken = false;
   try {
     record = nlohmann::json::parse(in);
     if (!record.at("scene").is_object())
@@ -60,6 +70,7 @@ LabelledResults render_one(const fs::path& dir, bool quiet, bool partial,
     if (const std::string incomplete = incomplete_run(record, dir); !incomplete.empty()) {
       if (!partial) throw RenderFailure(incomplete, exit_code::invalid_scene);
       std::fprintf(stderr, "sedem: warning: partial: %s\n", incomplete.c_str());
+      incomplete_run_taken = true;
     }
   } catch (const nlohmann::json::exception& e) {
     throw RenderFailure((dir / "run.json").string() + ": " + e.what(), exit_code::invalid_scene);
@@ -101,10 +112,12 @@ LabelledResults render_one(const fs::path& dir, bool quiet, bool partial,
   for (auto& o : observers.all) replayed.add(*o);
   for (const auto& [time, file] : entries) replayed.show(read(file, time));
   replayed.finish();
-  write_test_outputs(scene, observers, dir);
-  update_report(record, dir);
+  write_test_outputs(scene, observers, dir, incomplete_run_taken ? kPartialNote : "");
+  update_report(record, dir, incomplete_run_taken);
   if (!quiet) std::printf("sedem: redrew %s from %zu snapshots\n", dir.c_str(), entries.size());
-  return labelled_results(scene, observers);
+  LabelledResults results = labelled_results(scene, observers);
+  if (incomplete_run_taken) results.figures.partial_note = kPartialNote;
+  return results;
 }
 
 }  // namespace

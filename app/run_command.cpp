@@ -36,8 +36,10 @@ struct Failure {
   std::string message;
 };
 
-// A resumed run: its scene as the interrupted run resolved it.
-Scene scene_of_run(const fs::path& dir, std::string& scene_file) {
+// A resumed run: its scene as the interrupted run resolved it. `from_start` is set when the
+// run was stopped before its first checkpoint (none is there): it starts again from the
+// beginning, in its own folder.
+Scene scene_of_run(const fs::path& dir, std::string& scene_file, bool& from_start) {
   std::ifstream in(dir / "run.json");
   if (!in)
     throw Failure{exit_code::invalid_scene, (dir / "run.json").string() + ": cannot read it"};
@@ -47,7 +49,10 @@ Scene scene_of_run(const fs::path& dir, std::string& scene_file) {
                   (dir / "run.json").string() + ": not a sedem run record"};
   if (record.value("status", "") == "complete")
     throw Failure{exit_code::ok, dir.string() + " holds a complete run: nothing to resume"};
-  if (!fs::exists(dir / kCheckpoint))
+  // Neither half of a checkpoint: killed before its first one (a lone half is damage, refused
+  // when it is read).
+  from_start = !fs::exists(dir / kCheckpoint) && !fs::exists(dir / kCheckpointRecordFile);
+  if (!from_start && !fs::exists(dir / kCheckpoint))
     throw Failure{exit_code::invalid_scene, dir.string() + ": no " + kCheckpoint +
                                                 " to resume from (a run leaves one when stopped "
                                                 "by Ctrl-C or SIGTERM, and every "
@@ -113,7 +118,8 @@ std::string engine_message(const std::string& what) {
 int run_in(const RunOptions& options, RunContext& ctx) {
   // From the first instruction: a stop asked during the set-up ends the run at its start.
   install_stop_handlers();
-  const bool resuming = !options.resume_dir.empty();
+  bool resuming = !options.resume_dir.empty();
+  bool overwrite = options.overwrite;
   fs::path out = options.resume_dir;
   Scene& scene = ctx.scene;
   RunRecord& record = ctx.record;
@@ -121,11 +127,20 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   Sample sample;
   std::string first_scene_file = options.scene;
   try {
-    scene = resuming ? scene_of_run(out, first_scene_file)
+    bool from_start = false;
+    scene = resuming ? scene_of_run(out, first_scene_file, from_start)
                      : load_scene(options.scene, options.overrides);
+    if (from_start) {
+      // Nothing computed was kept: the run starts again, replacing its own outputs only.
+      std::cerr << "sedem: " << out.string()
+                << " holds no checkpoint (the run was stopped before its first): starting it "
+                   "again from the beginning\n";
+      resuming = false;
+      overwrite = true;
+    }
     if (const std::string refusal = memory_refusal(scene); !refusal.empty())
       throw Failure{exit_code::invalid_scene, refusal};
-    if (!resuming)
+    if (options.resume_dir.empty())
       out = options.out_dir.empty() ? fs::path("out") / safe_folder_name(scene.name)
                                     : fs::path(options.out_dir);
     sample = build_sample(sample_setup(scene));
@@ -140,7 +155,7 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   ctx.out = out;
   std::optional<RunFolder> folder;  // one run per folder, locked until the run ends
   try {
-    folder.emplace(out, resuming, options.overwrite);
+    folder.emplace(out, resuming, overwrite);
   } catch (const RunFolder::Error& e) {
     std::cerr << "sedem: " << e.what() << '\n';
     return exit_code::output_unwritable;
@@ -309,8 +324,8 @@ int run_in(const RunOptions& options, RunContext& ctx) {
     simulation.observers().finish();
     record.results = write_test_outputs(scene, run_observers, out);
     if (run_observers.instruments && status != exit_code::interrupted)
-      for (const auto& d : result_doubts(run_observers.instruments->results().granulometry,
-                                         doubts_setup, doubts_count)) {
+      for (const auto& d :
+           result_doubts(run_observers.instruments->granulometry(), doubts_setup, doubts_count)) {
         std::cerr << "sedem: warning: " << d.message << '\n';
         record.warnings.push_back({{"code", d.code}, {"message", d.message}});
       }

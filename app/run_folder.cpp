@@ -87,10 +87,15 @@ RunFolder::RunFolder(fs::path dir, bool resuming, bool overwrite) : dir_(std::mo
   std::vector<fs::path> entries;
   for (const auto& e : fs::directory_iterator(dir_)) entries.push_back(e.path());
   if (entries.empty()) return;
-  if (!overwrite) {
-    const bool old_run = fs::exists(dir_ / "run.json");
-    std::ifstream record(dir_ / "run.json");
-    const std::string text{std::istreambuf_iterator<char>(record), {}};
+  const bool old_run = fs::exists(dir_ / "run.json");
+  std::ifstream record(dir_ / "run.json");
+  const std::string text{std::istreambuf_iterator<char>(record), {}};
+  // A run killed before its first checkpoint (still "running", its lock free, as it is now
+  // ours): nothing of it can be resumed, and its outputs are taken over as --overwrite would.
+  const bool killed_early = text.find("\"status\": \"running\"") != std::string::npos &&
+                            !fs::exists(dir_ / "checkpoint.bin") &&
+                            !fs::exists(dir_ / "checkpoint.json");
+  if (!overwrite && !killed_early) {
     if (text.find("\"status\": \"interrupted\"") != std::string::npos)
       throw Error(dir_.string() + " holds an interrupted run: go on with it with sedem run " +
                   "--resume " + dir_.string() + ", or give --overwrite to replace it");

@@ -25,7 +25,9 @@ std::map<std::string, std::vector<CurvePoint>> read_curves(const fs::path& file)
   if (!in) throw std::runtime_error("cannot read " + file.string());
   std::map<std::string, std::vector<CurvePoint>> curves;
   std::string line;
-  std::getline(in, line);
+  // The header, after any comment ("# partial: ...").
+  while (std::getline(in, line) && line.rfind('#', 0) == 0) {
+  }
   while (std::getline(in, line)) {
     std::vector<std::string> cells;
     std::stringstream s(line);

@@ -51,7 +51,8 @@ LabelledResults labelled_results(const Scene& scene, const RunObservers& observe
   run.simulated_count = double(scene.sample.simulated_count);
   run.figures = figure_output(scene.output);
   if (observers.instruments) {
-    run.results = observers.instruments->results();
+    // Fig. 12's profiles only: a long instruments.profile_times_min holds thousands.
+    run.results = observers.instruments->results(render::kFig12MaxPanels);
     const Suspension& s = observers.instruments->suspension();
     run.homogeneous_density =
         s.fluid.density + s.initial_concentration * (1 - s.fluid.density / s.particle_density);
@@ -61,22 +62,34 @@ LabelledResults labelled_results(const Scene& scene, const RunObservers& observe
 }
 
 nlohmann::json write_test_outputs(const Scene& scene, const RunObservers& observers,
-                                  const fs::path& out_dir) {
-  const LabelledResults run = labelled_results(scene, observers);
+                                  const fs::path& out_dir, const std::string& partial_note) {
+  // Held in the vector the figures take, not copied into it: a run's profiles can be hundreds
+  // of MB.
+  std::vector<LabelledResults> runs;
+  runs.push_back(labelled_results(scene, observers));
+  LabelledResults& run = runs.front();
+  run.figures.partial_note = partial_note;
   const TestResults& results = run.results;
+  const auto note = [&](std::ostream& out) {
+    if (!partial_note.empty()) out << "# " << partial_note << '\n';
+  };
   for (const auto& t : results.granulometry.tests)
-    write_atomically(out_dir / ("readings_" + t.test + ".csv"),
-                     [&](std::ostream& out) { write_readings_csv(out, t.dem); });
+    write_atomically(out_dir / ("readings_" + t.test + ".csv"), [&](std::ostream& out) {
+      note(out);
+      write_readings_csv(out, t.dem);
+    });
   if (observers.instruments) {
-    write_atomically(out_dir / "granulometry.csv",
-                     [&](std::ostream& out) { write_granulometry_csv(out, results.granulometry); });
+    write_atomically(out_dir / "granulometry.csv", [&](std::ostream& out) {
+      note(out);
+      write_granulometry_csv(out, results.granulometry);
+    });
   }
   if (!results.hydrometer.empty()) {
     const auto& h = observers.instruments->hydrometer();
     render::HydrometerSeriesWriter bulb(out_dir, {h.heights, h.radii}, scene.cylinder.height);
     for (const auto& r : results.hydrometer) bulb.write(r.time, r.tip_depth);
   }
-  write_figures({run}, out_dir / "figures");
+  write_figures(runs, out_dir / "figures");
   return results_json(results);
 }
 

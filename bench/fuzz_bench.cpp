@@ -1,12 +1,17 @@
-// Hostile input against `sedem`: seeded mutations of the shipped scenes, of --set values and
-// of laboratory CSVs for `sedem reduce`. Every case must end in exit 2 naming what is wrong,
-// or in a run (or reduction) whose outputs hold no NaN or inf; never a crash, a hang or
-// another exit code. The test suite runs a few dozen cases (seconds); run it longer with
+// Hostile input against `sedem`: seeded mutations of the shipped scenes, of --set values, of
+// laboratory CSVs for `sedem reduce` and `sedem invert` (random rows, NaN, inf, huge and tiny
+// values, CR/LF mixes, empty and header-only files), of a run folder for `sedem render` (a
+// .vtp, particles.pvd or run.json cut short or changed) and of a checkpoint for
+// `sedem run --resume`. Every case must end in exit 2 naming what is wrong, or in a run (or
+// reduction, inversion, redrawing) whose outputs hold no NaN or inf; never a crash, a hang or
+// another exit code. The test suite runs a few cases of each kind (seconds); run it longer with
 //   build/bench/sedem_bench_fuzz --cases 2000 --seed 7
 // Prints the counts and exits 1 if any case failed.
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -161,6 +166,92 @@ std::string mutate_text(std::string s, std::mt19937_64& rng) {
   return s;
 }
 
+// A laboratory CSV damaged: a text mutation, a cell made hostile, random rows, its line ends
+// changed or mixed, emptied, or cut to its header.
+std::string mutate_lab(std::string csv, std::mt19937_64& rng) {
+  const auto header_end = csv.find('\n');
+  switch (rng() % 7) {
+    case 0:
+      return mutate_text(csv, rng);
+    case 1: {
+      auto comma = csv.find(',', header_end + rng() % (csv.size() - header_end));
+      if (comma == std::string::npos) return csv;
+      auto next = csv.find_first_of(",\n", comma + 1);
+      csv.replace(comma + 1, (next == std::string::npos ? csv.size() : next) - comma - 1,
+                  mutate_value(rng));
+      return csv;
+    }
+    case 2: {
+      // Random rows: numbers of any size, hostile values, as many as a cap allows and more.
+      const int rows = int(rng() % 4 == 0 ? 150 + rng() % 300 : 1 + rng() % 6);
+      const auto columns = std::count(csv.begin(), csv.begin() + long(header_end), ',') + 1;
+      for (int r = 0; r < rows; ++r) {
+        for (long c = 0; c < columns; ++c) {
+          if (c) csv += ',';
+          if (rng() % 5 == 0)
+            csv += mutate_value(rng);
+          else
+            csv += std::to_string(std::ldexp(double(rng() % 1000), int(rng() % 80) - 40));
+        }
+        csv += '\n';
+      }
+      return csv;
+    }
+    case 3: {
+      // Line ends: CRLF, CR alone, or each line its own.
+      std::string out;
+      const int mode = int(rng() % 3);
+      for (char c : csv) {
+        if (c != '\n') {
+          out += c;
+          continue;
+        }
+        const int end = mode == 2 ? int(rng() % 3) : mode;
+        out += end == 0 ? "\r\n" : end == 1 ? "\r" : "\n";
+      }
+      return out;
+    }
+    case 4:
+      return "";
+    case 5:
+      return csv.substr(0, header_end + 1);
+    default:
+      return csv.substr(0, header_end);  // the header alone, no line end
+  }
+}
+
+// A fresh copy of the folder `from` at `to`, to damage.
+fs::path fresh_copy(const fs::path& from, const fs::path& to) {
+  fs::remove_all(to);
+  fs::copy(from, to, fs::copy_options::recursive);
+  return to;
+}
+
+// A file damaged the ways files are: cut short (anywhere, or its last bytes), bytes changed,
+// emptied, or its text mutated.
+void damage_file(const fs::path& file, std::mt19937_64& rng) {
+  std::string bytes = text_of(file);
+  switch (rng() % 5) {
+    case 0:
+      bytes.resize(bytes.empty() ? 0 : rng() % bytes.size());
+      break;
+    case 1:
+      bytes.resize(bytes.size() > 40 ? bytes.size() - 1 - rng() % 40 : 0);
+      break;
+    case 2:
+      for (int k = 0; k < 1 + int(rng() % 8) && !bytes.empty(); ++k)
+        bytes[rng() % bytes.size()] = char(rng() % 256);
+      break;
+    case 3:
+      bytes.clear();
+      break;
+    default:
+      bytes = mutate_text(bytes, rng);
+  }
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out << bytes;
+}
+
 // A short, small run of any scene: the fuzzed value decides, not the run's length.
 const char* kShort =
     " --set run.end_time_s=1 --set output.frames=false --set output.particles=false"
@@ -213,7 +304,8 @@ int main(int argc, char** argv) {
   std::string sedem = SEDEM_EXE;
   std::string out_dir = "fuzz-out";
   int timeout = 60;
-  cli.add_option("--cases", cases, "Cases of each kind (scene, --set, reduce)")
+  cli.add_option("--cases", cases,
+                 "Cases of each kind (--set, scene, reduce, invert, render, resume)")
       ->capture_default_str();
   cli.add_option("--seed", seed, "Random seed")->capture_default_str();
   cli.add_option("--sedem", sedem, "The sedem executable")->capture_default_str();
@@ -292,6 +384,72 @@ int main(int argc, char** argv) {
                              (result / "points.csv").string(),
                          timeout);
     check_run(t, "reduce " + file.string() + " --mass-g " + mass, o, result, "");
+  }
+
+  // 4. Laboratory CSVs for `sedem invert`, each test's form.
+  const std::vector<std::pair<std::string, std::string>> invert_bases = {
+      {"hydrometer", lab},
+      {"buoyancy",
+       "time_min,apparent_mass_g\n0.5,1.20\n1,1.12\n2,1.05\n5,0.97\n15,0.90\n60,0.86\n"},
+      {"pipette", "time_min,dry_mass_g\n0.5,0.40\n1,0.35\n2,0.30\n5,0.22\n15,0.15\n60,0.08\n"}};
+  for (int i = 0; i < cases; ++i) {
+    const auto& [test, base] = invert_bases[rng() % invert_bases.size()];
+    const std::string csv = mutate_lab(base, rng);
+    const fs::path file = scratch / ("invert_" + std::to_string(i) + ".csv");
+    {
+      std::ofstream out(file, std::ios::binary);
+      out << csv;
+    }
+    const fs::path result = scratch / "inverted";
+    fs::remove_all(result);
+    const auto o = shell(sedem + " invert " + file.string() + " --test " + test +
+                             " --replicas 10 --quiet --out " + result.string(),
+                         timeout);
+    check_run(t, "invert " + file.string() + " --test " + test, o, result, "");
+  }
+  // 5. A run folder for `sedem render`, damaged: a .vtp, particles.pvd or run.json.
+  const fs::path good = scratch / "good_run";
+  fs::remove_all(good);
+  const auto made = shell(
+      sedem + " run " + (fs::path(SEDEM_SOURCE_DIR) / "scenes/demo.toml").string() + " --out " +
+          good.string() + " --quiet --set run.end_time_s=2 --set output.frames=false",
+      timeout);
+  if (made.status != 0) {
+    std::printf("sedem fuzz: the run to damage failed: %s\n", made.output.c_str());
+    return 1;
+  }
+  for (int i = 0; i < cases; ++i) {
+    const fs::path dir = fresh_copy(good, scratch / "damaged_run");
+    std::vector<fs::path> files = {dir / "particles.pvd", dir / "run.json"};
+    for (const auto& e : fs::directory_iterator(dir / "particles")) files.push_back(e.path());
+    std::sort(files.begin() + 2, files.end());
+    const fs::path& victim = files[rng() % files.size()];
+    damage_file(victim, rng);
+    const auto o = shell(sedem + " render --quiet " + dir.string(), timeout);
+    check_run(t, "render of a folder with " + victim.filename().string() + " damaged", o, dir, "");
+  }
+  // 6. A checkpoint for `sedem run --resume`, damaged: checkpoint.bin or checkpoint.json.
+  const fs::path stopped = scratch / "stopped_run";
+  fs::remove_all(stopped);
+  const auto killed =
+      shell(sedem + " run " + (fs::path(SEDEM_SOURCE_DIR) / "scenes/demo.toml").string() +
+                " --out " + stopped.string() +
+                " --quiet --set run.end_time_s=6 --set output.frames=false"
+                " --set integrator.crossing_fraction=0.1 --set integrator.max_coast_s=0.002"
+                " --set run.checkpoint_interval_s=0.2 & pid=$!; for i in $(seq 400); do [ -f " +
+                stopped.string() +
+                "/checkpoint.json ] && break; sleep 0.05; done; kill -KILL $pid; wait $pid",
+            timeout);
+  if (!fs::exists(stopped / "checkpoint.bin")) {
+    std::printf("sedem fuzz: the run to stop left no checkpoint: %s\n", killed.output.c_str());
+    return 1;
+  }
+  for (int i = 0; i < cases; ++i) {
+    const fs::path dir = fresh_copy(stopped, scratch / "damaged_checkpoint");
+    const fs::path victim = dir / (rng() % 2 ? "checkpoint.bin" : "checkpoint.json");
+    damage_file(victim, rng);
+    const auto o = shell(sedem + " run --resume " + dir.string() + " --quiet", timeout);
+    check_run(t, "run --resume with " + victim.filename().string() + " damaged", o, dir, "");
   }
 
   std::printf(

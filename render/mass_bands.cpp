@@ -264,7 +264,8 @@ vtkSmartPointer<vtkImageData> render_mass_bands(const MassBandsFigure& f) {
   return rasterize(draw_mass_bands(f, width, height).drawing());
 }
 
-void write_mass_bands_csv(const MassBandsFigure& f, const std::filesystem::path& file) {
+void write_mass_bands_csv(const MassBandsFigure& f, const std::filesystem::path& file,
+                          const std::string& note) {
   std::vector<std::string> header;
   std::vector<std::vector<double>> columns;
   for (const auto& s : f.samples) {
@@ -286,6 +287,7 @@ void write_mass_bands_csv(const MassBandsFigure& f, const std::filesystem::path&
   for (const auto& c : columns) rows = std::max(rows, c.size());
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
   write_atomically(file, [&](std::ostream& out) {
+    if (!note.empty()) out << "# " << note << "\n";
     for (std::size_t j = 0; j < header.size(); ++j) out << (j ? "," : "") << header[j];
     out << "\n";
     for (std::size_t i = 0; i < rows; ++i) {
@@ -302,10 +304,12 @@ std::vector<std::filesystem::path> write_mass_bands(const MassBandsFigure& figur
                                                     const std::filesystem::path& base,
                                                     const FigureOutput& output) {
   int width = 0, height = 0;
-  auto files = write_drawing(draw_mass_bands(figure, width, height).drawing(), base, output);
+  MassBandsFigure shown = figure;
+  if (!output.partial_note.empty()) shown.title += shown.title.empty() ? "(partial)" : " (partial)";
+  auto files = write_drawing(draw_mass_bands(shown, width, height).drawing(), base, output);
   auto csv = base;
   csv += ".csv";
-  write_mass_bands_csv(figure, csv);
+  write_mass_bands_csv(figure, csv, output.partial_note);
   files.push_back(csv);
   return files;
 }

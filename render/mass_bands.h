@@ -90,7 +90,9 @@ vtkSmartPointer<vtkImageData> render_mass_bands(const MassBandsFigure& figure);
 
 // CSV: per sample and time, "<sample> t=<time> s:band_top_depth_m" and
 // "<sample> t=<time> s:mass_percent".
-void write_mass_bands_csv(const MassBandsFigure& figure, const std::filesystem::path& file);
+// `note`, when given, is written first as a comment ("# partial: ...").
+void write_mass_bands_csv(const MassBandsFigure& figure, const std::filesystem::path& file,
+                          const std::string& note = "");
 
 // Writes `<base>.<format>` for each of `output`'s formats and `<base>.csv`; returns the files.
 std::vector<std::filesystem::path> write_mass_bands(const MassBandsFigure& figure,

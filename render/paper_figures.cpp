@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/model/spread.h"
 #include "core/physics/stokes.h"
 
 namespace sedem::render {
@@ -148,6 +149,13 @@ Figure fig12_largest_diameter(const LargestDiameterInput& in) {
                        [&](double t) { return std::abs(t - p.time_s) <= 1e-9 * (1 + t); }))
         times.push_back(p.time_s);
   std::sort(times.begin(), times.end());
+  // A panel per time makes an image of thousands of panels of thousands of times, which no
+  // one reads and no image format holds: that many spread over them.
+  if (times.size() > kFig12MaxPanels) {
+    std::vector<double> shown;
+    for (std::size_t i : spread_indices(times.size(), kFig12MaxPanels)) shown.push_back(times[i]);
+    times = std::move(shown);
+  }
 
   std::vector<Plot> panels;
   for (double t : times) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -33,6 +34,9 @@ struct LargestDiameterInput {
   double particle_density = 2500.0;  // kg/m^3, for Eq. 16
   Fluid fluid;
 };
+// One panel per time, at most kFig12MaxPanels: of more times (instruments.profile_times_min
+// can list thousands), that many spread evenly over them, the first and the last among them.
+inline constexpr std::size_t kFig12MaxPanels = 12;
 Figure fig12_largest_diameter(const LargestDiameterInput& input);
 
 // Fig. 13: suspension density along the hydrometer's bulb, one panel per sample, one curve

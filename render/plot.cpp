@@ -247,6 +247,14 @@ void write_figure_csv(const Figure& figure, const std::filesystem::path& file) {
 std::vector<std::filesystem::path> write_figure(const Figure& figure,
                                                 const std::filesystem::path& base,
                                                 const FigureOutput& output) {
+  if (!output.partial_note.empty()) {
+    Figure partial = figure;
+    partial.title += partial.title.empty() ? "(partial)" : " (partial)";
+    partial.csv_note = output.partial_note;
+    FigureOutput once = output;
+    once.partial_note.clear();
+    return write_figure(partial, base, once);
+  }
   auto files = write_drawing(figure_drawing(figure), base, output);
   auto csv = base;
   csv += ".csv";

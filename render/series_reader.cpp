@@ -1,7 +1,9 @@
 #include "render/series_reader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <fstream>
 #include <stdexcept>
 
 #include <vtkCommand.h>
@@ -32,6 +34,23 @@ class ErrorCatcher : public vtkCommand {
 
 [[noreturn]] void damaged(const std::filesystem::path& file, const std::string& why) {
   throw SeriesError(file.string() + ": damaged or not a sedem file: " + why);
+}
+
+// Whether the file's last non-blank bytes close its VTKFile element.
+bool ends_whole(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return false;
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  const std::streamoff tail = std::min<std::streamoff>(size, 64);
+  std::string end(static_cast<std::size_t>(tail), '\0');
+  in.seekg(size - tail);
+  in.read(end.data(), tail);
+  if (!in) return false;
+  while (!end.empty() && std::isspace(static_cast<unsigned char>(end.back()))) end.pop_back();
+  const std::string close = "</VTKFile>";
+  return end.size() >= close.size() &&
+         end.compare(end.size() - close.size(), close.size(), close) == 0;
 }
 
 }  // namespace
@@ -74,9 +93,15 @@ std::vector<std::pair<double, std::string>> read_pvd(const std::filesystem::path
 
 Snapshot read_particles_vtp(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file)) throw SeriesError("no such file: " + file.string());
+  // A file cut short: VTK reads what it can of it and says nothing (its arrays are then simply
+  // missing), so its end is looked at first.
+  if (!ends_whole(file)) damaged(file, "cut short (it does not end with </VTKFile>)");
   auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
   auto errors = vtkSmartPointer<ErrorCatcher>::New();
   reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  // The XML parser's and the decompressor's complaints go to these, not to the reader.
+  reader->SetReaderErrorObserver(errors);
+  reader->SetParserErrorObserver(errors);
   if (!reader->CanReadFile(file.c_str())) damaged(file, "not a VTK XML PolyData file");
   reader->SetFileName(file.c_str());
   reader->Update();
@@ -86,7 +111,7 @@ Snapshot read_particles_vtp(const std::filesystem::path& file) {
   const vtkIdType points = poly->GetNumberOfPoints();
   auto array = [&](const char* name) {
     vtkDataArray* a = pd->GetArray(name);
-    if (!a) throw SeriesError(file.string() + ": no point array '" + name + "'");
+    if (!a) damaged(file, std::string("no point array '") + name + "'");
     if (a->GetNumberOfTuples() != points)
       damaged(file, std::string("point array '") + name + "' is cut short");
     return a;
@@ -97,8 +122,7 @@ Snapshot read_particles_vtp(const std::filesystem::path& file) {
   vtkDataArray* size_class = array("size_class");
   vtkDataArray* id = array("id");
   vtkDataArray* time = poly->GetFieldData()->GetArray("TimeValue");
-  if (!time || time->GetNumberOfTuples() < 1)
-    throw SeriesError(file.string() + ": no field data 'TimeValue'");
+  if (!time || time->GetNumberOfTuples() < 1) damaged(file, "no field data 'TimeValue'");
 
   Snapshot s;
   s.time = time->GetTuple1(0);

@@ -299,6 +299,8 @@ Fit fit_readings(ForwardModel& model, const Eigen::VectorXd& measured, double si
   Fit fit;
   fit.x = Eigen::VectorXd::Constant(n, 1.0 / double(n));
   for (fit.iterations = 1; fit.iterations <= options.max_iterations; ++fit.iterations) {
+    if (options.progress)
+      options.progress("fit", double(fit.iterations - 1) / double(options.max_iterations));
     model.hold_speeds_at(fit.x);
     fit.jacobian = model.jacobian(fit.x);
     const Problem problem(fit.jacobian, model.readings(fit.x), fit.x, sigma, widths);
@@ -365,6 +367,7 @@ InvertedCurve invert_readings(const TestSetup& setup, Test test,
   // smoothing's misfit (the grid's own), plus what the finer grid changes in the fit's
   // readings, so that the fit is always inside them.
   if (options.bounds) {
+    if (options.progress) options.progress("bounds", 0);
     constexpr int kBoundSplit = 4;
     const Grid fine = split_grid(model.grid(), kBoundSplit);
     const Eigen::VectorXd x_fine = split_shares(x, kBoundSplit);
@@ -417,6 +420,7 @@ InvertedCurve invert_readings(const TestSetup& setup, Test test,
     out.prior_scale =
         std::sqrt(std::max(1.0, problem.roughness(x, out.lambda) / std::max(1.0, decided)));
     for (int b = 0; b < out.replicas; ++b) {
+      if (options.progress) options.progress("band", double(b) / double(out.replicas));
       Eigen::VectorXd replica = measured;
       for (Eigen::Index i = 0; i < replica.size(); ++i) replica(i) += noise(rng);
       Eigen::VectorXd prior(problem.smoothing_rows());

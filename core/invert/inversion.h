@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,9 @@ struct InversionOptions {
   std::uint64_t seed = 1;   // of the bootstrap's noise
   int max_iterations = 12;  // Gauss-Newton steps (the hydrometer)
   bool bounds = true;       // the readings' strict bounds (InvertedCurve::bound_*)
+  // Called as the inversion goes: its stage ("fit", "bounds", "band") and the share of that
+  // stage done (0-1). May throw to end the inversion.
+  std::function<void(const char* stage, double fraction)> progress;
 };
 
 // The default reading resolutions: 152H 1 g/L (its graduation), the sphere's balance 1 mg,

@@ -103,6 +103,8 @@ std::vector<std::vector<double>> read_numeric_csv(std::istream& in,
     ++number;
     // A spreadsheet's "CSV UTF-8" starts with a byte order mark.
     if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+    // A comment above the header ("# partial: ..." in the outputs of a partial run).
+    if (line.rfind('#', 0) == 0) continue;
     if (!blank(line)) header = split(line);
   }
   if (header.empty()) throw LabCsvError(number, "", "no header");

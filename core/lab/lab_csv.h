@@ -29,10 +29,11 @@ inline constexpr std::size_t kMaxLabLineBytes = 65536;
 inline constexpr double kMaxLabTimeMin = 1e6;
 
 // Reads a CSV of numbers with a header naming the columns (any order, extra columns
-// ignored): per data row, the values of `required` then `optional` in that order, NaN for an
-// optional column the header lacks. Lines end in LF, CRLF or a lone CR. Every value must be a
-// finite number; at least one data row and at most kMaxLabRows. Throws LabCsvError naming
-// the line and the column. `lines`, if given, receives each row's line number.
+// ignored; lines starting with '#' above it are comments): per data row, the values of
+// `required` then `optional` in that order, NaN for an optional column the header lacks. Lines end
+// in LF, CRLF or a lone CR. Every value must be a finite number; at least one data row and at most
+// kMaxLabRows. Throws LabCsvError naming the line and the column. `lines`, if given, receives each
+// row's line number.
 std::vector<std::vector<double>> read_numeric_csv(std::istream& in,
                                                   const std::vector<std::string>& required,
                                                   const std::vector<std::string>& optional = {},

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/model/spread.h"
 #include "core/reference/reference_readings.h"
 
 namespace sedem {
@@ -40,7 +41,17 @@ void InstrumentObserver::observe_in_place(double time, const Particles& particle
     bulb_profiles_.push_back(panel_.hydrometer_at(time, particles));
 }
 
-TestResults InstrumentObserver::results() const {
+TestResults InstrumentObserver::results(std::size_t max_profiles) const {
+  TestResults r;
+  r.granulometry = granulometry();
+  r.hydrometer = panel_.hydrometer_readings();
+  for (std::size_t i : spread_indices(profiles_.size(), max_profiles))
+    r.profiles.push_back(profiles_[i]);
+  r.bulb_profiles = bulb_profiles_;
+  return r;
+}
+
+Granulometry InstrumentObserver::granulometry() const {
   // The reference covers every reading time; compare only those the run reached.
   std::vector<TestReadings> dem = panel_.readings();
   std::vector<TestReadings> reference = reference_;
@@ -50,12 +61,7 @@ TestResults InstrumentObserver::results() const {
     const std::size_t reached = it == dem.end() ? 0 : it->rows.size();
     if (ref.rows.size() > reached) ref.rows.resize(reached);
   }
-  TestResults r;
-  r.granulometry = compare(dem, reference, classes_);
-  r.hydrometer = panel_.hydrometer_readings();
-  r.profiles = profiles_;
-  r.bulb_profiles = bulb_profiles_;
-  return r;
+  return compare(dem, reference, classes_);
 }
 
 }  // namespace sedem

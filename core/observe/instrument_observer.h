@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "core/fields/layer_fields.h"
@@ -31,8 +33,12 @@ class InstrumentObserver : public Observer {
   void observe_in_place(double time, const Particles& particles) override;
   bool accumulates() const override { return true; }
 
-  // The readings taken so far against the reference at the same times.
-  TestResults results() const;
+  // The readings taken so far against the reference at the same times, with at most
+  // `max_profiles` of the profiles, spread evenly over them (spread_indices).
+  TestResults results(std::size_t max_profiles = SIZE_MAX) const;
+  // Their granulometry alone: no copy of the profiles (thousands of them, 96 kB each at the
+  // paper's 4000 layers, for a long instruments.profile_times_min).
+  Granulometry granulometry() const;
   const HydrometerGeometry& hydrometer() const { return panel_.hydrometer(); }
   const Suspension& suspension() const { return panel_.suspension(); }
 

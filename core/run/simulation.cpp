@@ -53,19 +53,23 @@ RunEnd Simulation::run(const RunControl& control) {
   };
   const bool periodic = control.checkpoint && control.checkpoint_every > 0;
   const auto every = std::chrono::duration<double>(control.checkpoint_every);
+  const auto first = std::chrono::duration<double>(
+      control.first_checkpoint > 0 ? std::min(control.first_checkpoint, control.checkpoint_every)
+                                   : control.checkpoint_every);
   // A checkpoint due more often than the poll is looked for more often.
   const auto poll = periodic && control.checkpoint_every < 0.2
                         ? std::min(control.poll, std::chrono::milliseconds(20))
                         : control.poll;
   bool stopped = false;
   auto last_checkpoint = clock::now();
+  bool first_done = false;
   runner.start();
   while (!runner.ended()) {
     if (control.stop_requested && control.stop_requested()) {
       stopped = true;
       break;
     }
-    if (periodic && clock::now() - last_checkpoint >= every) {
+    if (periodic && clock::now() - last_checkpoint >= (first_done ? every : first)) {
       // Every snapshot before the engine's time is shown first: a resumed run replays those
       // and goes on from the saved state.
       runner.pause();
@@ -81,6 +85,7 @@ RunEnd Simulation::run(const RunControl& control) {
       }
       runner.resume();
       last_checkpoint = clock::now();
+      first_done = true;
     }
     auto snapshot = runner.next(poll);
     report();

@@ -32,8 +32,10 @@ struct RunControl {
   std::chrono::milliseconds poll{200};
   // Every `checkpoint_every` s of wall time (0: never), once the observers have seen every
   // snapshot before the engine's time and the engine rests between two steps, `checkpoint` is
-  // called with a function that writes the engine's state to a path.
+  // called with a function that writes the engine's state to a path. The first comes sooner,
+  // after `first_checkpoint` s, so that a kill early in a run loses no more than that either.
   double checkpoint_every = 0;
+  double first_checkpoint = 10;
   std::function<void(const std::function<void(const std::string&)>& save)> checkpoint;
   // Something went wrong that does not end the run (a periodic checkpoint not written).
   std::function<void(const std::string& message)> warning;

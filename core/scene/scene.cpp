@@ -49,9 +49,9 @@ Schema Scene::schema() {
   s.text("name", &name, "A name for the scene, used in titles and run.json.");
   s.number("run.end_time_s", &end_time, "s", 1, 0, 1e7, "Simulated duration of the test.");
   s.number("run.checkpoint_interval_s", &checkpoint_interval, "s", 1, 0, 1e6,
-           "Wall-clock time between checkpoints written during the run: a kill or a power cut "
-           "loses at most this much work (--resume goes on from the last one); 0: only when "
-           "stopped by Ctrl-C or SIGTERM.");
+           "Wall-clock time between checkpoints written during the run (the first after 10 s, "
+           "or this if shorter): a kill or a power cut loses at most this much work (--resume "
+           "goes on from the last one); 0: only when stopped by Ctrl-C or SIGTERM.");
   describe(fluid, s);
   describe(cylinder, s);
   describe(sample, s);

@@ -54,10 +54,17 @@ def read_csv(path, frame=True):
     """A CSV file as a pandas DataFrame (when pandas is installed and `frame`), otherwise a
     dict of column name -> numpy array."""
     pandas = _pandas() if frame else None
-    if pandas is not None:
-        return pandas.read_csv(path)
+    # Comment lines above the header ("# partial: ..." in the outputs of a partial run).
     with open(path, newline="") as f:
-        rows = list(csv.reader(f))
+        comments = 0
+        for line in f:
+            if not line.startswith("#"):
+                break
+            comments += 1
+    if pandas is not None:
+        return pandas.read_csv(path, skiprows=comments)
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))[comments:]
     if not rows:
         return {}
     header, body = rows[0], rows[1:]

@@ -21,6 +21,9 @@ struct FigureOutput {
   std::vector<FigureFormat> formats = {FigureFormat::png};
   int width_px = 1600;  // wide enough for a slide
   double dpi = 200;
+  // Non-empty: the figure is of a run that did not complete. Its title then ends in
+  // " (partial)" and its CSV starts with this as a comment ("# partial: ...").
+  std::string partial_note;
 };
 
 // "png,svg" (output.figure_formats) as formats, in that order; throws std::invalid_argument

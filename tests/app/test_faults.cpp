@@ -63,6 +63,15 @@ const std::string kSlow =
     " --set integrator.crossing_fraction=0.1 --set integrator.max_coast_s=0.002 --set "
     "run.checkpoint_interval_s=0.3";
 
+// The demo slowed so that a run lasts long enough to be killed: short coasting windows, short
+// steps, every grain on the dynamics to the bottom.
+std::string killable_demo(const std::string& end_time_s) {
+  return kDemo + " --set run.end_time_s=" + end_time_s +
+         " --set output.frames=false --quiet"
+         " --set integrator.crossing_fraction=0.1 --set integrator.max_coast_s=0.002"
+         " --set sample.simulated_count=600 --set integrator.retire_below_instruments=false";
+}
+
 void run_and_kill_after_checkpoint(const fs::path& dir, const std::string& extra = "") {
   auto r = test::run_sedem("run " + kDemo + kSlow + extra + " --out " + dir.string() +
                            " & pid=$!; for i in $(seq 400); do [ -f " + dir.string() +
@@ -138,14 +147,147 @@ TEST(Faults, ACheckpointOfAnotherRunIsRefused) {
   write_text(dir / "run.json", original);
 
   // Another run into the folder, killed before its first checkpoint: the old checkpoint is
-  // gone with the old run, nothing is mixed.
+  // gone with the old run, nothing is mixed: --resume starts the new run again from its
+  // beginning (stopped here by SIGTERM a moment later).
   auto other = test::run_sedem(
       "run " + kDemo + kSlow +
       " --set sample.seed=2 --set run.checkpoint_interval_s=0 --overwrite --out " + dir.string() +
       " & pid=$!; for i in $(seq 400); do grep -qs '\"sample.seed\": 2' " + dir.string() +
       "/run.json && break; sleep 0.05; done; kill -KILL $pid; wait $pid");
   ASSERT_EQ(other.status, 137) << other.output;
-  expect_refused(test::run_sedem("run --resume " + dir.string()), {"no checkpoint.bin"});
+  auto again = test::run_sedem("run --resume " + dir.string() +
+                               " 2>&1 & pid=$!; sleep 1.5; kill -TERM $pid; wait $pid");
+  EXPECT_EQ(again.status, 130) << again.output;
+  EXPECT_NE(again.output.find("starting it again from the beginning"), std::string::npos)
+      << again.output;
+  const auto restarted = read_json(dir / "run.json");
+  EXPECT_EQ(restarted["scene"]["sample.seed"], 2);
+  EXPECT_EQ(restarted["status"], "interrupted");
+  EXPECT_EQ(restarted["legs"], 1);
+}
+
+// 4. A run killed before its first checkpoint leaves nothing to resume, and no folder that
+// needs --overwrite: a plain run into it takes it over (its lock is free, its run.json still
+// says "running").
+TEST(Faults, AFolderOfARunKilledBeforeItsFirstCheckpointIsTakenOver) {
+  const fs::path dir = fresh("killed_early");
+  auto killed =
+      test::run_sedem("run " + kDemo + kSlow + " --set run.checkpoint_interval_s=0 --out " +
+                      dir.string() + " & pid=$!; for i in $(seq 400); do [ -f " + dir.string() +
+                      "/run.json ] && break; sleep 0.05; done; kill -KILL $pid; wait $pid");
+  ASSERT_EQ(killed.status, 137) << killed.output;
+  ASSERT_EQ(read_json(dir / "run.json")["status"], "running");
+  auto r = test::run_sedem("run " + kDemo + kShort + " --out " + dir.string());
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(read_json(dir / "run.json")["status"], "complete");
+  // One that was stopped cleanly (interrupted, with a checkpoint) is kept: resume or
+  // --overwrite.
+  auto stopped = test::run_sedem("run " + kDemo + kSlow + " --overwrite --out " + dir.string() +
+                                 " & pid=$!; sleep 1.5; kill -TERM $pid; wait $pid");
+  ASSERT_EQ(stopped.status, 130) << stopped.output;
+  auto refused = test::run_sedem("run " + kDemo + kShort + " --out " + dir.string());
+  EXPECT_EQ(refused.status, 3) << refused.output;
+  EXPECT_NE(refused.output.find("holds an interrupted run"), std::string::npos) << refused.output;
+}
+
+// 4. The first periodic checkpoint comes after about 10 s of wall time, whatever
+// run.checkpoint_interval_s (here its default, 3 min): a SIGKILL a moment after it loses only
+// that moment, and --resume ends exactly as the same run never stopped (run beside it).
+TEST(Faults, AKillAfterTheFirstTenSecondsResumesFromAnEarlyCheckpoint) {
+  const fs::path whole = fresh("early_whole"), parts = fresh("early_parts");
+  const std::string scene = killable_demo("40") + " --set integrator.threads=1";
+  const std::string w = whole.string(), p = parts.string();
+  auto r = test::run_sedem(
+      "run " + scene + " --out " + w + " & whole=$!; " + SEDEM_EXE + " run " + scene + " --out " +
+      p + " & parts=$!; start=$(date +%s); for i in $(seq 900); do [ -f " + p +
+      "/checkpoint.json ] && break; sleep 0.05; done; echo \"first checkpoint after " +
+      "$(( $(date +%s) - start )) s\"; sleep 1; kill -KILL $parts; wait $parts; echo " +
+      "\"killed: $?\"; " + SEDEM_EXE + " run --resume " + p + " --quiet; echo \"resumed: $?\"; " +
+      "wait $whole; echo \"whole: $?\"");
+  if (r.output.find("killed: 0") != std::string::npos)
+    GTEST_SKIP() << "the run ended within 11 s, before it could be killed: " << r.output;
+  EXPECT_NE(r.output.find("killed: 137"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("resumed: 0"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("whole: 0"), std::string::npos) << r.output;
+  const auto record = read_json(parts / "run.json");
+  EXPECT_EQ(record["status"], "complete");
+  EXPECT_EQ(record["legs"], 2);
+  for (const char* file : {"readings_hydrometer.csv", "readings_buoyancy.csv",
+                           "readings_pipette.csv", "granulometry.csv", "particles.pvd"})
+    EXPECT_EQ(text_of(parts / file), text_of(whole / file)) << file;
+  EXPECT_EQ(text_of(parts / "particles/particles_000002.vtp"),
+            text_of(whole / "particles/particles_000002.vtp"));
+}
+
+// 5. `render --partial` of a run that did not complete says so in every output: a "# partial"
+// first line in each CSV, " (partial)" in each figure's title, "partial": true in run.json.
+TEST(Faults, RenderPartialMarksEveryOutput) {
+  const fs::path dir = fresh("render_partial");
+  auto stopped =
+      test::run_sedem("run " + kDemo + kSlow + " --set output.figure_formats=png,svg --out " +
+                      dir.string() + " & pid=$!; sleep 3; kill -TERM $pid; wait $pid");
+  ASSERT_EQ(stopped.status, 130) << stopped.output;
+  expect_refused(test::run_sedem("render --quiet " + dir.string()), {"--partial"});
+  auto r = test::run_sedem("render --partial --quiet " + dir.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  int csvs = 0, svgs = 0;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    const auto ext = e.path().extension();
+    if (ext == ".csv") {
+      ++csvs;
+      EXPECT_EQ(text_of(e.path()).rfind("# partial: ", 0), 0u) << e.path();
+    } else if (ext == ".svg") {
+      ++svgs;
+      EXPECT_NE(text_of(e.path()).find("(partial)"), std::string::npos) << e.path();
+    }
+  }
+  EXPECT_GE(csvs, 4);  // readings, granulometry, a figure's
+  EXPECT_GE(svgs, 1);
+  const auto record = read_json(dir / "run.json");
+  EXPECT_EQ(record["partial"], true);
+  EXPECT_EQ(record["status"], "interrupted");
+}
+
+// 4. A long loop checks for a stop: 10 000 profile times (each a snapshot, a profile of every
+// layer) stop within about a second of SIGTERM, with a checkpoint and "interrupted".
+TEST(Faults, ManyProfileTimesStopPromptly) {
+  const fs::path dir = fresh("many_profiles");
+  std::string times = "[";
+  for (int i = 0; i < 10000; ++i) {
+    if (i) times += ',';
+    times += std::to_string(i * 0.0002);
+  }
+  times += "]";
+  auto r = test::run_sedem("run " + kDemo + " --set output.frames=false --quiet --set " +
+                           "'instruments.profile_times_min=" + times + "' --out " + dir.string() +
+                           " & pid=$!; sleep 4; start=$(date +%s%N); kill -TERM $pid; wait $pid;" +
+                           " status=$?; echo \"stopped in $(( ($(date +%s%N) - start) / " +
+                           "1000000 )) ms\"; exit $status");
+  EXPECT_EQ(r.status, 130) << r.output;
+  const auto at = r.output.find("stopped in ");
+  ASSERT_NE(at, std::string::npos) << r.output;
+  EXPECT_LT(std::stoi(r.output.substr(at + 11)), 3000) << r.output;
+  EXPECT_EQ(read_json(dir / "run.json")["status"], "interrupted");
+  EXPECT_TRUE(fs::exists(dir / "checkpoint.bin"));
+}
+
+// 2. Doubts on a run: too few particles in an instrument's volume, counted, in run.json.
+TEST(Faults, FewParticlesInAnInstrumentsVolumeAreAWarningInRunJson) {
+  const fs::path dir = fresh("few_particles");
+  auto r = test::run_sedem("run " + kDemo + kShort + " --set sample.simulated_count=200 --out " +
+                           dir.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("sedem: warning: pipette: its sampled volume holds about 4.8 of the 200"),
+            std::string::npos)
+      << r.output;
+  const auto warnings = read_json(dir / "run.json")["warnings"];
+  bool pipette = false;
+  for (const auto& w : warnings)
+    if (w["code"] == "few_particles" &&
+        w["message"].get<std::string>().find("pipette: its sampled volume holds about 4.8 of "
+                                             "the 200 simulated particles") != std::string::npos)
+      pipette = true;
+  EXPECT_TRUE(pipette) << warnings.dump(2);
 }
 
 // 4. Every value read back from a checkpoint is checked.
@@ -226,7 +368,16 @@ TEST(Faults, ADamagedSeriesIsRefusedNamingTheFile) {
   const fs::path vtp = dir / "particles/particles_000001.vtp";
   const std::string data = text_of(vtp);
   write_text(vtp, data.substr(0, data.size() / 2));
-  expect_refused(test::run_sedem("render " + dir.string()), {"particles_000001.vtp"});
+  expect_refused(test::run_sedem("render " + dir.string()), {"particles_000001.vtp", "damaged"});
+  // Cut at its very end, or bytes of its compressed data changed: damaged too, never "no
+  // point array" alone.
+  write_text(vtp, data.substr(0, data.size() - 20));
+  expect_refused(test::run_sedem("render " + dir.string()), {"particles_000001.vtp", "damaged"});
+  std::string changed = data;
+  for (std::size_t i = changed.size() / 2; i < changed.size() / 2 + 300; ++i)
+    changed[i] = char(changed[i] * 7 + 3);
+  write_text(vtp, changed);
+  expect_refused(test::run_sedem("render " + dir.string()), {"particles_000001.vtp", "damaged"});
   fs::remove(vtp);
   expect_refused(test::run_sedem("render " + dir.string()), {"particles_000001.vtp"});
   write_text(vtp, data);
@@ -399,13 +550,7 @@ TEST(Faults, ARunThatCannotFitInMemoryIsRefusedBeforeItStarts) {
 // checkpoint and ends bit-identical to one never stopped; run.json covers every leg.
 TEST(Faults, AKilledRunResumesFromItsLastCheckpointBitForBit) {
   const fs::path whole = fresh("kill_whole"), parts = fresh("kill_parts");
-  const std::string scene =
-      kDemo +
-      " --set run.end_time_s=20 --set output.frames=false --quiet"
-      " --set integrator.crossing_fraction=0.1 --set integrator.max_coast_s=0.002"
-      " --set sample.simulated_count=600 --set run.checkpoint_interval_s=0.2"
-      // Every grain on the dynamics to the bottom: the run lasts long enough to be killed.
-      " --set integrator.retire_below_instruments=false";
+  const std::string scene = killable_demo("20") + " --set run.checkpoint_interval_s=0.2";
   ASSERT_EQ(test::run_sedem("run " + scene + " --out " + whole.string()).status, 0);
   std::mt19937 rng(16);
   std::string command = "run " + scene + " --out " + parts.string();

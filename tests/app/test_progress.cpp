@@ -16,6 +16,32 @@ std::string printed(std::FILE* f) {
   return text;
 }
 
+// A long inversion says how far it is; a quick one prints nothing.
+TEST(StageProgress, PrintsOnlyOnceItHasRunAFewSeconds) {
+  std::FILE* f = std::tmpfile();
+  StageProgress log("invert", false, f, false, 2.0, 10.0);
+  log.update_at(0.5, "fit", 0.0);
+  log.update_at(1.9, "fit", 0.5);
+  EXPECT_EQ(printed(f), "");
+  std::fseek(f, 0, SEEK_END);
+  log.update_at(2.5, "fit", 0.75);
+  log.update_at(3.0, "fit", 0.8);     // within the log's interval: nothing
+  log.update_at(3.5, "band", 0.0);    // a new stage: a line
+  log.update_at(14.0, "band", 0.42);  // the interval passed: a line
+  log.done();
+  EXPECT_EQ(printed(f),
+            "sedem: invert: fit 75% (wall 0:03)\n"
+            "sedem: invert: band 0% (wall 0:04)\n"
+            "sedem: invert: band 42% (wall 0:14)\n");
+  std::fclose(f);
+  // Quiet: nothing, however long.
+  std::FILE* g = std::tmpfile();
+  StageProgress quiet("invert", true, g, false);
+  quiet.update_at(100, "band", 0.5);
+  EXPECT_EQ(printed(g), "");
+  std::fclose(g);
+}
+
 TEST(Progress, ATerminalLineStaysWithinEightyColumns) {
   // The 24 h test: long simulated and wall times, every stage of the run.
   Progress p(86400, false, nullptr, true, 80);

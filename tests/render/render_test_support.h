@@ -19,8 +19,12 @@ inline std::filesystem::path output_dir() {
 }
 
 // Every format a figure can be written in.
-inline const render::FigureOutput kEveryFormat{
-    {render::FigureFormat::png, render::FigureFormat::svg, render::FigureFormat::pdf}};
+inline const render::FigureOutput kEveryFormat = [] {
+  render::FigureOutput output;
+  output.formats = {render::FigureFormat::png, render::FigureFormat::svg,
+                    render::FigureFormat::pdf};
+  return output;
+}();
 
 // A fixed, hand-made snapshot: a 7 x 20 lattice of three sizes.
 inline Snapshot lattice_snapshot() {

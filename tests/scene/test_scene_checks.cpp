@@ -108,6 +108,27 @@ TEST(SceneChecks, EverySizeNeedsAParticle) {
                  "particles; at most 1e+08");
 }
 
+// An instrument whose sampled volume holds under one simulated particle reads noise alone:
+// refused, naming the key that made it so (the count, or the instrument's own size).
+TEST(SceneChecks, AnInstrumentWithUnderOneParticleInItsVolumeIsRefused) {
+  const std::string two_sizes =
+      "[sample]\nsize_count = 2\nsimulated_count = 1500\n[sample.grading]\nfamily = "
+      "\"table\"\ndiameters_um = [10.0, 35.0, 60.0]\npercent_finer = [0.0, 50.0, 100.0]\n";
+  EXPECT_EQ(error_of(two_sizes), "");
+  const std::string few = error_of(two_sizes, {"sample.simulated_count=16"});
+  EXPECT_MESSAGE(few, "sample.simulated_count = 16 leaves about");
+  EXPECT_MESSAGE(few, "its readings would be noise alone");
+  EXPECT_MESSAGE(few, "allowed for this scene: >= ");
+  const std::string small = error_of(two_sizes, {"instruments.pipette.volume_ml=0.01"});
+  EXPECT_MESSAGE(small, "instruments.pipette.volume_ml = 0.01 leaves about");
+  EXPECT_MESSAGE(small, "in the pipette's sampled volume");
+  EXPECT_MESSAGE(small, "mL (or instruments.pipette.enabled = false)");
+  // The instrument off: nothing to refuse.
+  EXPECT_EQ(error_of(two_sizes,
+                     {"instruments.pipette.volume_ml=0.01", "instruments.pipette.enabled=false"}),
+            "");
+}
+
 TEST(SceneChecks, UnplaceableSceneIsRefusedWithTheReason) {
   const std::string e = error_of(
       "[cylinder]\nheight_m = 0.01\ndiameter_m = 0.004\n[sample]\nsimulated_count = 20000\n"
