@@ -2,6 +2,12 @@
 
 #include <algorithm>
 
+// GCC 12 at -O3 takes the members of a shape moved into Drawing's variant for uninitialised
+// (-Wmaybe-uninitialized, a false positive of its inliner); other compilers do not warn.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+
 namespace sedem::render {
 
 PixelCanvas::PixelCanvas(double width, double height, std::string title) {
