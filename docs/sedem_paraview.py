@@ -12,9 +12,10 @@
 #     the suspension's own range (the bed, which is far denser, drawn apart in brown), at most
 #     COLUMN_GRAINS grains as dots coloured by diameter and sized by it (not to scale: at the
 #     column's scale a 70 um grain is a tenth of a pixel), the hydrometer's bulb;
-#   - a zoom on the grains around the axis at 0.3 H below the free surface: each grain a disc
-#     at its true diameter, coloured by diameter, with a dot at its centre (so that grains
-#     smaller than a pixel still show);
+#   - a zoom where the grains are (the bed's surface, else the largest grains), small enough
+#     that the median grain is ZOOM_DISC_PX pixels across: each grain a disc at its true
+#     diameter, coloured by diameter, with a dot at its centre; a red frame in the column
+#     shows where it is;
 #   - the suspension density against depth, over the same range: each layer, and their mean
 #     over a hundredth of the column.
 # --screenshot writes the three views as one PNG; --state saves a ParaView state file.
@@ -23,18 +24,21 @@ import math
 import os
 import sys
 
+import numpy as np
 import paraview.simple
 
 from paraview.simple import (
-    AssignViewToLayout, Calculator, ColorBy, CreateLayout, CreateView, GetAnimationScene,
+    AssignViewToLayout, Box, Calculator, ColorBy, CreateLayout, CreateView, GetAnimationScene,
     GetColorTransferFunction, GetScalarBar, GetTimeKeeper, MaskPoints, ProgrammableFilter,
     PVDReader, Render, SaveScreenshot, SaveState, Show, Text, Threshold, Transform, servermanager)
 
 WIDTH, HEIGHT_PX = 1600, 900  # the layout, pixels
 COLUMN_GRAINS = 3000  # at most this many grains drawn in the column view
-ZOOM_GRAINS = 60  # the zoom window holds about this many grains
+ZOOM_GRAINS = 40  # the zoom window holds about this many grains
+ZOOM_DISC_PX = 8  # and draws their median grain at least this many pixels across
 SMOOTH = 0.01  # the strip's running mean, as a fraction of the column's height
 BED_COLOUR = [0.55, 0.38, 0.2]
+ZOOM_COLOUR = [0.85, 0.1, 0.1]
 
 # Adds `suspension_density_mean`: each layer's suspension density averaged with its
 # neighbours over SMOOTH of the column (the bed's layers left out of the mean and kept as they
@@ -146,11 +150,14 @@ def label_text(value, step, pad=""):
     return pad + "%.*f" % (decimals(step), value)
 
 
-def percentile(values, q):
+# Not `percentile`: running a Python filter puts all of numpy into __main__, which is this
+# script, and numpy's percentile (q in per cent) would replace a function of that name.
+def fraction_point(values, q):
+    """The value below which a fraction `q` of `values` lies (nearest rank)."""
     values = builtins.sorted(values)
     if not values:
         return None
-    k = builtins.min(len(values) - 1, builtins.max(0, int(round(q * (len(values) - 1)))))
+    k = builtins.min(len(values) - 1, builtins.max(0, int(builtins.round(q * (len(values) - 1)))))
     return values[k]
 
 
@@ -165,30 +172,63 @@ def suspension_range(mean, time):
               if bed.GetValue(k) == 0]
     if not values:
         values = [rho.GetValue(k) for k in range(0, data.GetNumberOfPoints(), 2)]
-    low, high = percentile(values, 0.01), percentile(values, 0.99)
+    low, high = fraction_point(values, 0.01), fraction_point(values, 0.99)
     if high - low < 1e-3:
         high = low + 1.0
     return low, high
 
 
-def grains_near(particles, time, x, y, count):
-    """Half the height of a window centred on (x, y) that holds about `count` grains, the
-    largest diameter among them and how many grains there are in all."""
+def bed_top(fields, time, height):
+    """The height of the bed's surface (the top of its highest layer), 0 without a bed."""
+    fields.UpdatePipeline(time)
+    data = servermanager.Fetch(fields)
+    bed = data.GetPointData().GetArray("bed")
+    depth = data.GetPointData().GetArray("depth")
+    layers = data.GetNumberOfPoints() // 2
+    if bed is None or depth is None or layers == 0:
+        return 0.0
+    thickness = height / layers
+    tops = [height - depth.GetValue(2 * j) + 0.5 * thickness for j in range(layers)
+            if bed.GetValue(2 * j) != 0]
+    return builtins.max(tops) if tops else 0.0
+
+
+def zoom_window(particles, time, surface, aspect):
+    """Where the zoom looks and how far: (x, y, half height, grains in it, largest diameter,
+    median diameter). On the bed's surface when there is a bed (grains packed, the largest of
+    them there), else on the largest grains; the window holds about ZOOM_GRAINS grains, and is
+    made smaller where that would draw their median grain under ZOOM_DISC_PX pixels across.
+    `aspect` is the view's width over its height."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
     particles.UpdatePipeline(time)
     data = servermanager.Fetch(particles)
     n = data.GetNumberOfPoints()
     if n == 0:
-        return 1e-3, 1e-5, 0
-    diameters = data.GetPointData().GetArray("diameter")
-    near = []
-    for i in range(n):
-        px, py, _ = data.GetPoint(i)
-        near.append((builtins.max(builtins.abs(px - x), builtins.abs(py - y)), diameters.GetValue(i)))
-    near.sort()
-    k = builtins.min(count, n) - 1
-    half = builtins.max(near[k][0], 3.0 * near[0][1])
-    largest = builtins.max(d for r, d in near[: k + 1])
-    return half, largest, n
+        return 0.0, surface, 1e-3, 0, 0.0, 0.0
+    xy = vtk_to_numpy(data.GetPoints().GetData())[:, :2]
+    d = vtk_to_numpy(data.GetPointData().GetArray("diameter"))
+    if surface > 0:
+        # The bed's surface a third of the way down the window: the bed below, grains above.
+        cx, cy = 0.0, surface
+    else:
+        largest = d >= np.quantile(d, 0.95)
+        cx, cy = 0.0, float(np.median(xy[largest, 1]))
+    # Distance in the window's own shape: a grain at `r` is inside a window of half height r.
+    r = np.maximum(np.abs(xy[:, 0] - cx) / aspect, np.abs(xy[:, 1] - cy))
+    order = np.argsort(r)
+    k = builtins.min(ZOOM_GRAINS, n) - 1
+    half = float(r[order[k]])
+    inside = d[order[: k + 1]]
+    # Discs of at least ZOOM_DISC_PX pixels for the median grain.
+    half = builtins.min(half, float(np.median(inside)) * HEIGHT_PX / (2.0 * ZOOM_DISC_PX))
+    half = builtins.max(half, 3.0 * float(d[order[0]]))
+    if surface > 0:
+        cy = surface - half / 3.0
+        r = np.maximum(np.abs(xy[:, 0] - cx) / aspect, np.abs(xy[:, 1] - cy))
+    shown = d[r <= half]
+    if shown.size == 0:
+        shown = d[order[:1]]
+    return cx, cy, half, int(shown.size), float(shown.max()), float(np.median(shown))
 
 
 def main():
@@ -245,6 +285,7 @@ def main():
     layout.SplitHorizontal(2, 0.3 / 0.7)
     layout.AssignView(6, chart)
     column_half = 0.52 * height
+    surface = 0.0  # the bed's surface, m above the bottom; 0 without a bed
     pixel = 2.0 * column_half / HEIGHT_PX  # m per pixel in the column view
 
     if fields is not None:
@@ -252,6 +293,8 @@ def main():
                                   Input=fields)
         mean.Script = MEAN_SCRIPT
         low, high = suspension_range(mean, time)
+        surface = bed_top(fields, time, height)
+        print("sedem_paraview: strip %.6g %.6g bed %.6g" % (low, high, surface))
         f = Show(mean, column)
         f.Ambient, f.Diffuse = 1.0, 0.0  # unlit: the colour is the density's
         ColorBy(f, ("POINTS", "suspension_density_mean"))
@@ -265,7 +308,7 @@ def main():
             1e3 * SMOOTH * height))
         bar.RangeLabelFormat = "%-#.1f"
         bar.AutomaticLabelFormat = 0
-        bar.LabelFormat = "%-#.0f"
+        bar.LabelFormat = "%-.0f"
         bar.WindowLocation = "Upper Left Corner"
         f.SetScalarBarVisibility(column, True)
 
@@ -364,9 +407,10 @@ def main():
         t.FontSize = 14
         t.WindowLocation = "Lower Right Corner"
 
-        # The zoom: every grain a disc at its true size, centred on the axis at 0.3 H.
-        zy = 0.7 * height
-        half, largest, _ = grains_near(particles, time, 0.0, zy, ZOOM_GRAINS)
+        # The zoom: every grain a disc at its true size, where the grains are (the bed's
+        # surface, else the largest grains), small enough that the discs are several pixels.
+        zx, zy, half, count, largest, median = zoom_window(particles, time, surface,
+                                                           float(column_px) / HEIGHT_PX)
         g = discs(micrometres, zoom, 1.0, False)
         ColorBy(g, ("POINTS", "diameter_um"))
         g.SetScalarBarVisibility(zoom, False)
@@ -378,16 +422,32 @@ def main():
         centres.PointSize = 2
         ColorBy(centres, None)
         centres.AmbientColor = centres.DiffuseColor = [0.15, 0.15, 0.15]
-        section_camera(zoom, 0.0, zy, half)
+        section_camera(zoom, zx, zy, half)
+        px = HEIGHT_PX / (2.0 * half)  # pixels per metre in the zoom
         label = Text(registrationName="zoom window")
-        label.Text = ("true size: discs at each grain's diameter\n"
-                      "window %.3g mm high at %.2g H below the surface\n"
-                      "largest grain here %.3g µm = %.0f px" % (
-                          2e3 * half, 0.3, 1e6 * largest, largest / (2.0 * half) * HEIGHT_PX))
+        label.Text = ("discs at each grain's true diameter\n"
+                      "window %.2g mm high at %.2g mm%s\n"
+                      "(red frame in the column)\n"
+                      "%d grains: median %.0f µm = %.0f px,\nlargest %.0f µm = %.0f px" % (
+                          2e3 * half, 1e3 * zy, ", the bed's top" if surface > 0 else "",
+                          count, 1e6 * median, median * px, 1e6 * largest, largest * px))
         t = Show(label, zoom)
         t.Color = [0.0, 0.0, 0.0]
         t.FontSize = 14
         t.WindowLocation = "Upper Center"
+        # Where the zoom is, in the column: a red frame (at least 10 px, to be seen).
+        marker = Box(registrationName="zoom window in the column")
+        marker.XLength = builtins.max(2.0 * half * column_px / HEIGHT_PX, 10 * pixel)
+        marker.YLength = builtins.max(2.0 * half, 10 * pixel)
+        marker.ZLength = 0.0
+        marker.Center = [zx, zy, 0.001]
+        m = Show(marker, column)
+        m.Representation = "Outline"
+        m.ColorArrayName = ["POINTS", ""]
+        m.AmbientColor = m.DiffuseColor = ZOOM_COLOUR
+        m.LineWidth = 2.0
+        print("sedem_paraview: zoom %.6g %.6g %.6g %d %.6g %.6g" % (
+            zx, zy, half, count, median, largest))
 
     # Last: showing the first data in a view resets its camera.
     section_camera(column, 0.0, 0.5 * height, column_half)

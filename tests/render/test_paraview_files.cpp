@@ -1,11 +1,15 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <numbers>
 #include <set>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -372,6 +376,32 @@ std::filesystem::path write_sample5_like_run(const std::string& name) {
   return dir;
 }
 
+// Pixels of [x0, x1) x [y0, y1) of a clear hue (not white, grey or black): the discs, not text.
+int coloured_pixels(vtkImageData* image, int x0, int x1, int y0, int y1) {
+  int n = 0;
+  for (int j = y0; j < y1; ++j)
+    for (int i = x0; i < x1; ++i) {
+      const auto* px = static_cast<unsigned char*>(image->GetScalarPointer(i, j, 0));
+      n += std::max({px[0], px[1], px[2]}) - std::min({px[0], px[1], px[2]}) > 40;
+    }
+  return n;
+}
+
+// The numbers the macro printed on its line "sedem_paraview: WHAT ...".
+std::vector<double> macro_line(const std::string& out, const std::string& what) {
+  std::vector<double> numbers;
+  const auto at = out.find("sedem_paraview: " + what + " ");
+  if (at == std::string::npos) return numbers;
+  std::istringstream line(out.substr(at, out.find('\n', at) - at));
+  std::string word;
+  while (line >> word) {
+    char* end = nullptr;
+    const double v = std::strtod(word.c_str(), &end);
+    if (end != word.c_str() && *end == '\0') numbers.push_back(v);
+  }
+  return numbers;
+}
+
 // Distinct colours (to 8 levels a channel) among the pixels of [x0, x1) x [y0, y1), rows from
 // the bottom, leaving out white and near-white.
 int distinct_colours(vtkImageData* image, int x0, int x1, int y0, int y1) {
@@ -413,8 +443,67 @@ TEST(ParaviewFiles, TheStateMacroShowsARunAsThePaperDoes) {
   // does), and there are labels in the 100 px beside it.
   EXPECT_EQ(test::dark_pixels(image, 960, 964, 0, 900), 0);
   EXPECT_GT(test::dark_pixels(image, 964, 1060, 40, 860), 300);
+  // The zoom: discs of many diameters (many colours of the map), each several pixels across.
+  EXPECT_GT(distinct_colours(image, 490, 950, 20, 780), 20);
+  EXPECT_GT(coloured_pixels(image, 490, 950, 20, 780), 3000);
+  // The strip's range is the suspension's (about 1005-1036 kg/m^3 here, the bed apart), not
+  // a sliver of it: the macro prints what it chose.
+  const auto strip = macro_line(out, "strip");
+  ASSERT_EQ(strip.size(), 3u) << out;
+  EXPECT_LT(strip[0], 1010.0) << out;
+  EXPECT_GT(strip[1], 1025.0) << out;
+  EXPECT_NEAR(strip[2], 0.0125, 0.002) << out;  // the bed's surface, m
+  // The zoom sits on the bed's surface, its median grain at least 8 px across.
+  const auto zoom = macro_line(out, "zoom");
+  ASSERT_EQ(zoom.size(), 6u) << out;
+  EXPECT_NEAR(zoom[1], 0.0125, 0.003) << out;
+  EXPECT_GE(zoom[4] * 900 / (2 * zoom[2]), 7.9) << out;
   auto result = render::compare_with_baseline(image, test::baseline("paraview_state.png"),
                                               test::output_dir(), 20.0);
+  EXPECT_TRUE(result.passed) << result.message;
+}
+
+const std::filesystem::path kSedem = SEDEM_EXE;
+
+TEST(ParaviewCommand, WithoutPvpythonItStopsAndSaysSo) {
+  const auto dir = write_run("pv_command_none");
+  const auto out = run("env -u SEDEM_PVPYTHON PATH=/nonexistent '" + kSedem.string() +
+                       "' paraview '" + dir.string() + "' 2>&1; echo \"status=$?\"");
+  EXPECT_NE(out.find("status=1"), std::string::npos) << out;
+  EXPECT_NE(out.find("no pvpython on PATH"), std::string::npos) << out;
+  EXPECT_NE(out.find("--pvpython"), std::string::npos) << out;
+  EXPECT_FALSE(std::filesystem::exists(dir / "sedem.pvsm"));
+  const auto named = run("'" + kSedem.string() + "' paraview '" + dir.string() +
+                         "' --pvpython /nonexistent/pvpython 2>&1; echo \"status=$?\"");
+  EXPECT_NE(named.find("status=1"), std::string::npos) << named;
+  EXPECT_NE(named.find("/nonexistent/pvpython cannot be run"), std::string::npos) << named;
+  // A folder that is not a run is refused before pvpython is looked for.
+  const auto empty = test::output_dir() / "pv_command_empty";
+  std::filesystem::create_directories(empty);
+  const auto refused =
+      run("'" + kSedem.string() + "' paraview '" + empty.string() + "' 2>&1; echo \"status=$?\"");
+  EXPECT_NE(refused.find("no particles.pvd or fields.pvd"), std::string::npos) << refused;
+}
+
+TEST(ParaviewCommand, WritesAStateThatLoadsBackAsTheSamePicture) {
+  const auto dir = write_run("pv_command");
+  const auto shot = dir / "command.png";
+  const auto out = run("'" + kSedem.string() + "' paraview '" + dir.string() + "' --pvpython '" +
+                       (kSource / "tests/render/pvpython.sh").string() + "' --screenshot '" +
+                       shot.string() + "' 2>&1; echo \"status=$?\"");
+  ASSERT_NE(out.find("status=0"), std::string::npos) << out;
+  EXPECT_NE(out.find("sedem.pvsm"), std::string::npos) << out;
+  ASSERT_TRUE(std::filesystem::exists(dir / "sedem.pvsm")) << out;
+  EXPECT_FALSE(std::filesystem::exists(dir / "sedem_paraview.py.tmp"));
+  ASSERT_TRUE(std::filesystem::exists(shot)) << out;
+  // ParaView loads the state back (File > Load State) and draws the same three views.
+  const auto loaded = dir / "loaded.png";
+  const auto back = pvpython(kSource / "tests/render/load_state.py",
+                             "'" + (dir / "sedem.pvsm").string() + "' '" + loaded.string() + "'");
+  EXPECT_NE(back.find("LOADED 3 views"), std::string::npos) << back;
+  ASSERT_TRUE(std::filesystem::exists(loaded)) << back;
+  auto result =
+      render::compare_with_baseline(render::read_png(loaded), shot, test::output_dir(), 5.0);
   EXPECT_TRUE(result.passed) << result.message;
 }
 
