@@ -2,6 +2,8 @@
 
 #include <array>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -79,6 +81,12 @@ struct Drawing {
   std::vector<Shape> shapes;     // painted in order on a white ground
 
   void add(Shape shape) { shapes.push_back(std::move(shape)); }
+  // A shape of one kind, built in place (moving a whole variant trips GCC 12's
+  // -Wmaybe-uninitialized on the kinds it does not hold).
+  template <class S>
+  requires(!std::is_same_v<std::decay_t<S>, Shape>) void add(S&& shape) {
+    shapes.emplace_back(std::in_place_type<std::decay_t<S>>, std::forward<S>(shape));
+  }
   void line(Point a, Point b, Stroke stroke = {}) { add(Polyline{{a, b}, std::move(stroke)}); }
   void rectangle(double x0, double y0, double x1, double y1, Rgba fill) {
     add(Polygon{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, fill, false, {}});

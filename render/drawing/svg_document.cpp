@@ -50,7 +50,10 @@ std::string stroke_attributes(const Stroke& s) {
                     opacity("stroke-opacity", s.color);
   if (!s.dashes.empty()) {
     out += " stroke-dasharray=\"";
-    for (std::size_t i = 0; i < s.dashes.size(); ++i) out += (i ? " " : "") + num(s.dashes[i]);
+    for (std::size_t i = 0; i < s.dashes.size(); ++i) {
+      if (i) out += ' ';
+      out += num(s.dashes[i]);
+    }
     out += "\"";
   }
   return out;
@@ -58,8 +61,12 @@ std::string stroke_attributes(const Stroke& s) {
 
 std::string points_of(const std::vector<Point>& points) {
   std::string out;
-  for (std::size_t i = 0; i < points.size(); ++i)
-    out += (i ? " " : "") + num(points[i].x) + "," + num(points[i].y);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (i) out += ' ';
+    out += num(points[i].x);
+    out += ',';
+    out += num(points[i].y);
+  }
   return out;
 }
 
