@@ -25,6 +25,7 @@ struct InversionOptions {
   std::uint64_t seed = 1;   // of the bootstrap's noise
   int max_iterations = 12;  // Gauss-Newton steps (the hydrometer)
   bool bounds = true;       // the readings' strict bounds (InvertedCurve::bound_*)
+  int bound_split = 4;      // the bounds' grid: each interval of the fit's cut in this many
 };
 
 // The default reading resolutions: 152H 1 g/L (its graduation), the sphere's balance 1 mg,
@@ -54,9 +55,10 @@ struct InvertedCurve {
   double coverage = 0;
   int replicas = 0;
   double prior_scale = 1;  // gamma: the band's prior spread, calibrated to the fit
-  // The readings' strict bounds (reading_bounds), % finer at bound_diameter, the grid's nodes
-  // each split in four (every fourth is a node of the curve): any curve of that finer grid
-  // whose readings, linearised at the fit, stay within bound_tolerance of the measured ones.
+  // The readings' strict bounds (reading_bounds), % finer at bound_diameter, the grid's
+  // intervals each split in bound_split (every bound_split-th is a node of the curve): the
+  // least and the most of any curve whatever (its mass anywhere inside the bins) whose
+  // readings, linearised at the fit, stay within bound_tolerance of the measured ones.
   // Empty if the linear programme failed.
   std::vector<double> bound_diameter, bound_lower, bound_upper;
   std::vector<double> bound_tolerance;        // per reading, in its unit
