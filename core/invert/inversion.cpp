@@ -334,7 +334,9 @@ InvertedCurve invert_readings(const TestSetup& setup, Test test,
   {
     const ForwardModel probe(setup, test, log_grid(1e-6, 1e-4, 2), times);
     for (const auto& m : data)
-      out.reading_diameter.push_back(probe.model_diameter(m.time, m.value));
+      out.reading_diameter.push_back(probe.model_diameter(
+          m.time,
+          std::isnan(m.depth_reading) ? m.value : m.depth_reading - probe.clear_liquid_reading()));
     out.resolved_max = *std::max_element(out.reading_diameter.begin(), out.reading_diameter.end());
     out.resolved_min = *std::min_element(out.reading_diameter.begin(), out.reading_diameter.end());
   }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,10 @@ struct Measurement {
   double time = 0;   // s since the start of sedimentation
   double value = 0;  // 152H: R - composite correction, g/L; sphere: apparent mass, g;
                      // pipette: dry mass of the sample, g
+  // 152H: the reading the bulb's depth comes from, R + meniscus correction, g/L (ASTM: the
+  // composite correction is the concentration's, not the depth's); NaN: value plus the
+  // model's own clear-liquid reading (a simulated test's).
+  double depth_reading = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct InversionOptions {
