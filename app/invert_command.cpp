@@ -1,5 +1,6 @@
 #include "app/invert_command.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include "app/exit_codes.h"
 #include "app/progress.h"
 #include "app/run_record.h"
+#include "core/instruments/hydrometer.h"
 #include "core/invert/invert_input.h"
 #include "core/lab/hydrometer_reduction.h"
 #include "core/lab/lab_csv.h"
@@ -56,6 +58,13 @@ void check_flags(const InvertOptions& o) {
   if (o.specific_gravity) check_range("--gs", *o.specific_gravity, 1.01, 10.0);
   if (o.dry_mass_g) check_range("--mass-g", *o.dry_mass_g, 1.0, 500.0);
   if (o.depth_cm) check_range("--depth-cm", *o.depth_cm, 2.0, 200.0);
+  if (o.liquid_density) check_range("--liquid-density", *o.liquid_density, 950.0, 1100.0);
+  if (o.blank_g) check_range("--blank-g", *o.blank_g, -1000.0, 1000.0);
+  if (o.pipette_ml) check_range("--pipette-ml", *o.pipette_ml, 1.0, 100.0);
+  if (o.blank_g && o.test != "buoyancy")
+    throw InvalidSetup(
+        "--blank-g is the sphere's apparent mass in the clear liquid: for --test "
+        "buoyancy (use --liquid-density for the others)");
 }
 
 // The command's outputs in `dir`.
@@ -109,6 +118,16 @@ Scene make_setup(const InvertOptions& o, double temperature_c) {
         *o.volume_ml * 1e-6 / (std::numbers::pi / 4.0 * s.cylinder.diameter * s.cylinder.diameter);
   if (o.specific_gravity && from_scene) s.sample.particle_density = *o.specific_gravity * 1e3;
   if (o.dry_mass_g && from_scene) s.sample.total_mass = *o.dry_mass_g * 1e-3;
+  if (o.pipette_ml) s.instruments.pipette_volume = *o.pipette_ml * 1e-6;
+  if (o.liquid_density) s.fluid.density = *o.liquid_density;
+  if (o.blank_g) {
+    // The sphere weighs m - rho_L V in the clear liquid: the liquid's density from its blank.
+    const double r = 0.5 * s.instruments.sphere_diameter;
+    const double volume = 4.0 / 3.0 * std::numbers::pi * r * r * r;
+    s.fluid.density = (s.instruments.sphere_mass - *o.blank_g * 1e-3) / volume;
+    check_range("the clear liquid's density from --blank-g (kg/m^3)", s.fluid.density, 950.0,
+                1100.0);
+  }
   if (o.depth_cm) {
     check_range("--depth-cm", *o.depth_cm, 2.0, 0.9 * s.cylinder.height * 100.0);
     s.instruments.buoyancy_depth_fraction = *o.depth_cm * 1e-2 / s.cylinder.height;
@@ -149,10 +168,14 @@ int run_invert(const InvertOptions& o) {
     std::fprintf(stderr, "sedem: %s: cannot open the readings file\n", shortened(source).c_str());
     return exit_code::invalid_scene;
   }
-  // The readings in the laboratory's units and, for the 152H, the standard D422 reduction.
+  // The readings in the laboratory's units and, for the 152H, its standard reduction
+  // (`reduce`'s: D7928 or D422).
   std::vector<invert::Measurement> data;
   std::vector<GradingPoint> standard;
-  const std::string standard_name = invert::reading_format(test).standard_name;
+  const LabMethod method = parse_lab_method(o.method);
+  const std::string standard_name = test == Test::hydrometer
+                                        ? lab_method_name(method)
+                                        : invert::reading_format(test).standard_name;
   Scene scene;
   // A run's true curve: its sample's size classes, as the run drew them from its scene.
   std::vector<SizeClass> truth;
@@ -164,7 +187,8 @@ int run_invert(const InvertOptions& o) {
       times.push_back(row[0]);
       raw.push_back(format.run_to_lab * row[1]);
     }
-    auto recorded = invert::record_simulated(test_setup(scene), test, times, raw, o.resolution);
+    auto recorded =
+        invert::record_simulated(test_setup(scene), test, times, raw, o.resolution, method);
     data = std::move(recorded.data);
     standard = std::move(recorded.standard);
     truth = plan_sample(sample_setup(scene)).classes;
@@ -176,10 +200,27 @@ int run_invert(const InvertOptions& o) {
       for (const auto& r : lab) mean_t += r.temperature / double(lab.size());
     }
     scene = make_setup(o, mean_t);
-    const LabSpecimen specimen{scene.sample.particle_density / 1000.0, scene.sample.total_mass};
-    for (const auto& p : reduce_astm_d422(lab, specimen))  // validates the readings
-      standard.push_back({p.diameter, p.percent_finer});
-    for (const auto& r : lab) data.push_back({r.time, r.reading - r.composite_correction});
+    // The clear liquid as its blank reads it (R + C_m of the 152H in water and dispersant:
+    // g/L of Gs = 2.65 soil in water at 20 C), unless its density is given: the model's bulb
+    // then floats where the laboratory's did.
+    double blank = 0;
+    for (const auto& r : lab)
+      blank += (r.composite_correction + r.meniscus_correction) / double(lab.size());
+    const bool corrected = std::any_of(lab.begin(), lab.end(), [](const LabReading& r) {
+      return r.composite_correction != 0 || r.meniscus_correction != 0;
+    });
+    if (corrected && !o.liquid_density) {
+      const HydrometerDesign design;
+      scene.fluid.density = design.calibration_water_density +
+                            blank * (1.0 - 1.0 / design.calibration_specific_gravity);
+    }
+    for (const auto& p : reduce_lab_readings(lab, invert::lab_specimen(test_setup(scene)), method))
+      standard.push_back({p.diameter, p.percent_finer});  // validates the readings
+    // The concentration from R - C, the bulb's depth from R + C_m (ASTM: the composite
+    // correction is the concentration's only).
+    for (const auto& r : lab)
+      data.push_back(
+          {r.time, r.reading - r.composite_correction, r.reading + r.meniscus_correction});
   } else {
     data = invert::read_measurements_csv(in, test);
     scene = make_setup(o, o.temperature_c.value_or(20.0));

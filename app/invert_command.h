@@ -20,6 +20,10 @@ struct InvertOptions {
   std::optional<double> area_cm2;          // cylinder's inside area, default 27.8
   std::optional<double> depth_cm;          // sphere's or pipette's depth; default 0.3 H
   std::optional<double> temperature_c;     // sphere and pipette without a scene; default 20
+  std::optional<double> liquid_density;    // kg/m^3 of the clear liquid; default water's
+  std::optional<double> blank_g;           // the sphere's apparent mass in the clear liquid
+  std::optional<double> pipette_ml;        // the pipette's volume; default 35 or the scene's
+  std::string method = "d7928";            // the 152H's standard reduction: d7928 | d422
   double resolution = 0;                   // 0: the test's default
   int refine = 2;
   int replicas = 200;

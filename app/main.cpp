@@ -124,14 +124,17 @@ int main(int argc, char** argv) {
 
   ReduceOptions reduce_options;
   auto* reduce_cmd = cli.add_subcommand(
-      "reduce", "Reduce laboratory hydrometer readings (152H) to a grading curve, ASTM D422/D7928");
+      "reduce",
+      "Reduce laboratory hydrometer readings (152H) to a grading curve, ASTM D7928 or D422");
   reduce_cmd
       ->add_option("readings", reduce_options.readings,
                    "CSV with columns time_min, reading_g_per_l, temperature_c and optionally "
-                   "composite_correction_g_per_l")
+                   "composite_correction_g_per_l, meniscus_correction_g_per_l")
       ->required();
   reduce_cmd->add_option("--out", reduce_options.out, "Output CSV (default: standard output)");
-  reduce_cmd->add_option("--method", reduce_options.method, "d422 or d7928")
+  reduce_cmd
+      ->add_option("--method", reduce_options.method,
+                   "d7928 (ASTM D7928) or d422 (ASTM D422, withdrawn in 2016)")
       ->check(CLI::IsMember({"d422", "d7928"}))
       ->capture_default_str();
   reduce_cmd->add_option("--gs", reduce_options.specific_gravity, "Specific gravity of the solids")
@@ -139,6 +142,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   reduce_cmd->add_option("--mass-g", reduce_options.dry_mass_g, "Oven-dry mass of the specimen, g")
       ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  reduce_cmd->add_option("--volume-ml", reduce_options.volume_ml, "Suspension volume, mL")
+      ->check(CLI::Range(10.0, 10000.0))
       ->capture_default_str();
 
   InvertOptions invert_options;
@@ -169,6 +175,11 @@ int main(int argc, char** argv) {
                    "Set-up from a scene (cylinder, fluid, grains, mass, instruments)")
       ->excludes(invert_run);
   invert_cmd->add_option("--out", invert_options.out, "Output folder")->capture_default_str();
+  invert_cmd
+      ->add_option("--method", invert_options.method,
+                   "The 152H's standard reduction: d7928 (ASTM D7928) or d422 (ASTM D422)")
+      ->check(CLI::IsMember({"d422", "d7928"}))
+      ->capture_default_str();
   invert_cmd->add_option("--gs", invert_options.specific_gravity,
                          "Specific gravity of the solids (default 2.65)");
   invert_cmd->add_option("--mass-g", invert_options.dry_mass_g, "Dry mass in the cylinder, g (50)");
@@ -179,6 +190,14 @@ int main(int argc, char** argv) {
                          "Depth of the sphere's or pipette's centre, cm (0.3 of the height)");
   invert_cmd->add_option("--temperature-c", invert_options.temperature_c,
                          "Water temperature for the sphere and pipette without a scene (20)");
+  invert_cmd->add_option("--liquid-density", invert_options.liquid_density,
+                         "Density of the clear liquid (water and dispersant), kg/m^3 (default: "
+                         "water at the temperature)");
+  invert_cmd->add_option("--blank-g", invert_options.blank_g,
+                         "Sphere: its apparent mass in the clear liquid, g (sets the liquid's "
+                         "density)");
+  invert_cmd->add_option("--pipette-ml", invert_options.pipette_ml,
+                         "Pipette: the volume it draws, mL (default 35, or the scene's)");
   invert_cmd
       ->add_option("--resolution", invert_options.resolution,
                    "Reading resolution in the reading's unit (0: 1 g/L, 0.001 g, 0.0001 g)")

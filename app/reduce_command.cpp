@@ -50,9 +50,9 @@ int reduce(const ReduceOptions& options) {
   std::vector<LabPoint> points;
   try {
     const auto readings = read_lab_readings_csv(in);
-    const LabSpecimen specimen{options.specific_gravity, options.dry_mass_g * 1e-3};
-    points = options.method == "d7928" ? reduce_astm_d7928(readings, specimen)
-                                       : reduce_astm_d422(readings, specimen);
+    const LabSpecimen specimen{options.specific_gravity, options.dry_mass_g * 1e-3,
+                               options.volume_ml * 1e-6};
+    points = reduce_lab_readings(readings, specimen, parse_lab_method(options.method));
   } catch (const std::invalid_argument& e) {  // LabCsvError, InvalidLabReading
     std::fprintf(stderr, "sedem: %s: %s\n", shortened(options.readings).c_str(), e.what());
     return exit_code::invalid_scene;

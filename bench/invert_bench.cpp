@@ -13,7 +13,8 @@
 // --source reference reads the continuum reference solution (what the DEM converges to; the
 // forward model's physics, on the sample's own 220 size classes); --source dem simulates the
 // sample with --count particles (minutes per sample) and reads the DEM. Standard reductions:
-// ASTM D422 for the 152H (its effective depth, the scene's cylinder volume), Eq. 16 with
+// ASTM D422 for the 152H (its effective depth, the scene's cylinder volume; kept so that the
+// recorded results compare with the earlier ones), Eq. 16 with
 // Eq. 22 or Eq. 17 for the sphere and the pipette. Writes invert_bench.csv into --out.
 #include <CLI/CLI.hpp>
 
@@ -60,7 +61,7 @@ invert::RecordedTest recorded(const Scene& scene, Test test, const Case& c,
                               const std::vector<double>& shift) {
   std::vector<double> raw = c.raw;
   for (std::size_t i = 0; i < shift.size() && i < raw.size(); ++i) raw[i] += shift[i];
-  return invert::record_simulated(test_setup(scene), test, c.times, raw);
+  return invert::record_simulated(test_setup(scene), test, c.times, raw, 0, LabMethod::d422);
 }
 
 }  // namespace

@@ -22,15 +22,16 @@ _sedem() {
     batch) opts="--sweep --seeds --seed0 --out --set --jobs -j --overwrite --quiet -q --help -h" ;;
     render) opts="--out --partial --quiet -q --help -h" ;;
     paraview) opts="--pvpython --time --screenshot --quiet -q --help -h" ;;
-    reduce) opts="--out --method --gs --mass-g --help -h" ;;
-    invert) opts="--run --partial --test --scene --out --gs --mass-g --volume-ml --area-cm2 --depth-cm
-      --temperature-c --resolution --refine --replicas --coverage --seed --quiet -q --help -h" ;;
+    reduce) opts="--out --method --gs --mass-g --volume-ml --help -h" ;;
+    invert) opts="--run --partial --test --scene --out --method --gs --mass-g --volume-ml --area-cm2
+      --depth-cm --temperature-c --liquid-density --blank-g --pipette-ml --resolution --refine
+      --replicas --coverage --seed --quiet -q --help -h" ;;
     design) opts="--test --readings --out --set --dem-count --sizes --quiet -q --help -h" ;;
     bench) opts="--help -h" ;;
   esac
   case $prev in
     --out|--resume) COMPREPLY=($(compgen -d -- "$cur")); return ;;
-    --method) COMPREPLY=($(compgen -W "d422 d7928" -- "$cur")); return ;;
+    --method) COMPREPLY=($(compgen -W "d7928 d422" -- "$cur")); return ;;
     --test) COMPREPLY=($(compgen -W "hydrometer buoyancy pipette" -- "$cur")); return ;;
     --run) COMPREPLY=($(compgen -d -- "$cur")); return ;;
     --scene) COMPREPLY=($(compgen -f -X '!*.toml' -- "$cur") $(compgen -d -- "$cur")); return ;;

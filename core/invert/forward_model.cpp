@@ -205,19 +205,28 @@ Eigen::VectorXd ForwardModel::readings(const Eigen::VectorXd& x) const {
 }
 
 Eigen::MatrixXd ForwardModel::jacobian(const Eigen::VectorXd& x, double step) const {
+  std::vector<Eigen::Index> all(std::size_t(x.size()));
+  for (std::size_t k = 0; k < all.size(); ++k) all[k] = Eigen::Index(k);
+  return jacobian_columns(x, all, step);
+}
+
+Eigen::MatrixXd ForwardModel::jacobian_columns(const Eigen::VectorXd& x,
+                                               const std::vector<Eigen::Index>& columns,
+                                               double step) const {
   const Eigen::Index n = x.size();
   const Eigen::VectorXd base = readings(x);
-  Eigen::MatrixXd j(base.size(), n);
+  Eigen::MatrixXd j(base.size(), Eigen::Index(columns.size()));
   if (affine()) {
     // Affine: each column is the response to the bin alone, less the empty reading.
     const Eigen::VectorXd empty = readings(Eigen::VectorXd::Zero(n));
-    for (Eigen::Index k = 0; k < n; ++k) j.col(k) = readings(Eigen::VectorXd::Unit(n, k)) - empty;
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      j.col(Eigen::Index(c)) = readings(Eigen::VectorXd::Unit(n, columns[c])) - empty;
     return j;
   }
-  for (Eigen::Index k = 0; k < n; ++k) {
+  for (std::size_t c = 0; c < columns.size(); ++c) {
     Eigen::VectorXd moved = x;
-    moved(k) += step;
-    j.col(k) = (readings(moved) - base) / step;
+    moved(columns[c]) += step;
+    j.col(Eigen::Index(c)) = (readings(moved) - base) / step;
   }
   return j;
 }

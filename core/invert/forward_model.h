@@ -85,6 +85,10 @@ class ForwardModel {
   // d readings / d x at x: exact columns for the affine tests, one-sided differences of
   // `step` (a share of the sample's mass) for the hydrometer.
   Eigen::MatrixXd jacobian(const Eigen::VectorXd& x, double step = 0.02) const;
+  // The same for the bins in `columns` only, in that order (a column per entry).
+  Eigen::MatrixXd jacobian_columns(const Eigen::VectorXd& x,
+                                   const std::vector<Eigen::Index>& columns,
+                                   double step = 0.02) const;
 
   // The reading with no soil in suspension (0 % finer) and with the whole sample uniformly
   // in suspension (100 % finer, time zero).

@@ -336,7 +336,9 @@ InvertedCurve invert_readings(const TestSetup& setup, Test test,
   {
     const ForwardModel probe(setup, test, log_grid(1e-6, 1e-4, 2), times);
     for (const auto& m : data)
-      out.reading_diameter.push_back(probe.model_diameter(m.time, m.value));
+      out.reading_diameter.push_back(probe.model_diameter(
+          m.time,
+          std::isnan(m.depth_reading) ? m.value : m.depth_reading - probe.clear_liquid_reading()));
     out.resolved_max = *std::max_element(out.reading_diameter.begin(), out.reading_diameter.end());
     out.resolved_min = *std::min_element(out.reading_diameter.begin(), out.reading_diameter.end());
   }
@@ -360,31 +362,64 @@ InvertedCurve invert_readings(const TestSetup& setup, Test test,
   out.shares.assign(x.data(), x.data() + x.size());
   out.percent_finer = curve_of(x);
 
-  // The readings' own bounds, on a grid kBoundSplit times finer (the fit's own grid holds
-  // every curve linear in log d between its nodes, which is itself a prior: a knee inside a
-  // bin would be outside its bounds), with the same size classes. The tolerance is the one
-  // the lambda rule keeps the fit within, half a resolution step (rounding) plus the least
-  // smoothing's misfit (the grid's own), plus what the finer grid changes in the fit's
+  // The readings' own bounds, on a grid bound_split times finer. They must hold for any
+  // curve, not only for curves linear in log d between the nodes of some grid (a knee inside
+  // a bin would then be outside them, and the bounds would move as the grid is refined):
+  // each bin's mass may sit anywhere inside it, so its response to a reading is taken as
+  // anything between the least and the most of a unit mass's at the bin's two ends and its
+  // middle (a size's response changes monotonically across a bin: its front passes the
+  // instrument once). The finest bin reaches down to a tenth of the first node and the
+  // coarsest up to four times the last, where a size's response no longer changes (it
+  // stays, or has long gone). The response of a unit mass at one size is the model's for a
+  // bin 2e-4 wide in log d around it, a single size class; the model is linearised at the
+  // fit, its fine bins' shares each put at their middle. The tolerance is the one the lambda
+  // rule keeps the fit within, half a resolution step (rounding) plus the least smoothing's
+  // misfit (the grid's own), plus what putting the fit's shares at the middles changes in its
   // readings, so that the fit is always inside them.
   if (options.bounds) {
     if (options.progress) options.progress("bounds", 0);
-    constexpr int kBoundSplit = 4;
-    const Grid fine = split_grid(model.grid(), kBoundSplit);
-    const Eigen::VectorXd x_fine = split_shares(x, kBoundSplit);
-    ForwardModel fine_model(setup, test, fine, times,
-                            std::max(1, options.subclasses / kBoundSplit));
-    fine_model.hold_speeds_at(x_fine);
-    const Eigen::MatrixXd j_fine = fine_model.jacobian(x_fine);
-    const Eigen::VectorXd read_fine = fine_model.readings(x_fine);
+    const int split = std::max(1, options.bound_split);
+    const Grid fine = split_grid(model.grid(), split);
+    const Eigen::VectorXd x_fine = split_shares(x, split);
+    const auto& d = fine.nodes;
+    const Eigen::Index bins = Eigen::Index(fine.bins());
+    // Sizes probed: bin b's lower end is probe 2b, its middle 2b + 1, its upper end 2b + 2.
+    std::vector<double> probes{d.front() / 10.0};
+    for (Eigen::Index b = 0; b < bins; ++b) {
+      const double lo = probes.back();
+      const double hi = b + 1 == bins ? 4.0 * d.back() : d[std::size_t(b)];
+      probes.push_back(std::sqrt(lo * hi));
+      probes.push_back(hi);
+    }
+    constexpr double kProbeWidth = 1e-4;
+    Grid probe_grid;
+    for (double p : probes) {
+      probe_grid.nodes.push_back(p * (1.0 - kProbeWidth));
+      probe_grid.nodes.push_back(p * (1.0 + kProbeWidth));
+    }
+    std::vector<Eigen::Index> columns;  // probe q's bin in probe_grid: 1 + 2q
+    for (std::size_t q = 0; q < probes.size(); ++q) columns.push_back(Eigen::Index(1 + 2 * q));
+    ForwardModel probe_model(setup, test, probe_grid, times, 1);
+    Eigen::VectorXd x_probe = Eigen::VectorXd::Zero(Eigen::Index(probe_grid.bins()));
+    for (Eigen::Index b = 0; b < bins; ++b) x_probe(columns[std::size_t(2 * b + 1)]) = x_fine(b);
+    probe_model.hold_speeds_at(x_probe);
+    const Eigen::MatrixXd g = probe_model.jacobian_columns(x_probe, columns);
+    const Eigen::VectorXd read_probe = probe_model.readings(x_probe);
+    Eigen::MatrixXd j_low(g.rows(), bins), j_high(g.rows(), bins), j_mid(g.rows(), bins);
+    for (Eigen::Index b = 0; b < bins; ++b) {
+      j_mid.col(b) = g.col(2 * b + 1);
+      j_low.col(b) = g.col(2 * b).cwiseMin(g.col(2 * b + 1)).cwiseMin(g.col(2 * b + 2));
+      j_high.col(b) = g.col(2 * b).cwiseMax(g.col(2 * b + 1)).cwiseMax(g.col(2 * b + 2));
+    }
     Eigen::VectorXd tolerance = choice.floor_residual.cwiseAbs().array() + 0.5 * resolution +
-                                (read_fine - fitted).cwiseAbs().array();
+                                (read_probe - fitted).cwiseAbs().array();
     // The fit meets the tolerance up to the NNLS's rounding: widen by a hair so the linear
     // programme is feasible whenever the fit is. Its shares sum to 1 within the weight of
     // that row (about 1e-3); the bounds keep the fit's own sum so that it is one of their
     // curves.
     tolerance.array() += 1e-9 * (measured.cwiseAbs().maxCoeff() + resolution);
     const auto bounds =
-        reading_bounds(j_fine, read_fine - j_fine * x_fine, measured, tolerance, x.sum());
+        reading_bounds(j_low, j_high, read_probe - j_mid * x_fine, measured, tolerance, x.sum());
     if (bounds.feasible) {
       out.bound_diameter = fine.nodes;
       out.bound_lower = bounds.lower;

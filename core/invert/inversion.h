@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,10 @@ struct Measurement {
   double time = 0;   // s since the start of sedimentation
   double value = 0;  // 152H: R - composite correction, g/L; sphere: apparent mass, g;
                      // pipette: dry mass of the sample, g
+  // 152H: the reading the bulb's depth comes from, R + meniscus correction, g/L (ASTM: the
+  // composite correction is the concentration's, not the depth's); NaN: value plus the
+  // model's own clear-liquid reading (a simulated test's).
+  double depth_reading = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct InversionOptions {
@@ -29,6 +34,7 @@ struct InversionOptions {
   // Called as the inversion goes: its stage ("fit", "bounds", "band") and the share of that
   // stage done (0-1). May throw to end the inversion.
   std::function<void(const char* stage, double fraction)> progress;
+  int bound_split = 4;  // the bounds' grid: each interval of the fit's cut in this many
 };
 
 // The default reading resolutions: 152H 1 g/L (its graduation), the sphere's balance 1 mg,
@@ -58,9 +64,10 @@ struct InvertedCurve {
   double coverage = 0;
   int replicas = 0;
   double prior_scale = 1;  // gamma: the band's prior spread, calibrated to the fit
-  // The readings' strict bounds (reading_bounds), % finer at bound_diameter, the grid's nodes
-  // each split in four (every fourth is a node of the curve): any curve of that finer grid
-  // whose readings, linearised at the fit, stay within bound_tolerance of the measured ones.
+  // The readings' strict bounds (reading_bounds), % finer at bound_diameter, the grid's
+  // intervals each split in bound_split (every bound_split-th is a node of the curve): the
+  // least and the most of any curve whatever (its mass anywhere inside the bins) whose
+  // readings, linearised at the fit, stay within bound_tolerance of the measured ones.
   // Empty if the linear programme failed.
   std::vector<double> bound_diameter, bound_lower, bound_upper;
   std::vector<double> bound_tolerance;        // per reading, in its unit

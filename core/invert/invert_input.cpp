@@ -11,7 +11,7 @@
 namespace sedem::invert {
 
 const ReadingFormat& reading_format(Test test) {
-  static const ReadingFormat hydrometer{"reading_g_per_l", "reading_g_per_l", 1.0, "ASTM D422"};
+  static const ReadingFormat hydrometer{"reading_g_per_l", "reading_g_per_l", 1.0, "ASTM D7928"};
   static const ReadingFormat sphere{"apparent_mass_g", "apparent_mass_kg", 1e3, "Eq. 22 (sphere)"};
   static const ReadingFormat pipette{"dry_mass_g", "dry_mass_kg", 1e3, "Eq. 17 (pipette)"};
   return test == Test::hydrometer ? hydrometer : test == Test::buoyancy ? sphere : pipette;
@@ -33,7 +33,7 @@ std::vector<Measurement> read_measurements_csv(std::istream& in, Test test) {
 std::vector<GradingPoint> standard_reduction(const TestSetup& setup, Test test,
                                              const std::vector<Measurement>& data) {
   if (test == Test::hydrometer)
-    throw std::invalid_argument("standard_reduction: the 152H's is ASTM D422 (core/lab)");
+    throw std::invalid_argument("standard_reduction: the 152H's is ASTM D7928/D422 (core/lab)");
   const ForwardModel model(setup, test, log_grid(1e-6, 1e-4, 2), {});
   const Suspension& s = model.suspension();
   const double empty = model.empty_reading(), full = model.full_reading();
@@ -49,8 +49,14 @@ std::vector<GradingPoint> standard_reduction(const TestSetup& setup, Test test,
   return out;
 }
 
+LabSpecimen lab_specimen(const TestSetup& setup) {
+  const double volume = std::numbers::pi / 4.0 * setup.cylinder.diameter * setup.cylinder.diameter *
+                        setup.cylinder.height;
+  return {setup.particle_density / 1000.0, setup.total_mass, volume};
+}
+
 RecordedTest record_simulated(const TestSetup& setup, Test test, const std::vector<double>& times,
-                              const std::vector<double>& raw, double resolution) {
+                              const std::vector<double>& raw, double resolution, LabMethod method) {
   if (times.size() != raw.size())
     throw std::invalid_argument("record_simulated: as many times as readings");
   const double step = resolution > 0 ? resolution : default_resolution(test);
@@ -61,13 +67,10 @@ RecordedTest record_simulated(const TestSetup& setup, Test test, const std::vect
   for (std::size_t i = 0; i < times.size(); ++i) {
     const double r = std::round(raw[i] / step) * step;
     out.data.push_back({times[i], r - clear});
-    lab.push_back({times[i], r, 20.0, clear});
+    lab.push_back({times[i], r, 20.0, clear, 0.0, 0});
   }
   if (test == Test::hydrometer) {
-    const double volume_l = std::numbers::pi / 4.0 * setup.cylinder.diameter *
-                            setup.cylinder.diameter * setup.cylinder.height * 1e3;
-    const LabSpecimen specimen{setup.particle_density / 1000.0, setup.total_mass / volume_l};
-    for (const auto& p : reduce_astm_d422(lab, specimen))
+    for (const auto& p : reduce_lab_readings(lab, lab_specimen(setup), method))
       out.standard.push_back({p.diameter, p.percent_finer});
   } else {
     out.standard = standard_reduction(setup, test, out.data);

@@ -6,6 +6,7 @@
 
 #include "core/instruments/granulometry.h"
 #include "core/invert/inversion.h"
+#include "core/lab/hydrometer_reduction.h"
 
 namespace sedem::invert {
 
@@ -18,7 +19,7 @@ struct ReadingFormat {
   // is; the sphere's apparent_mass_kg and the pipette's dry_mass_kg to g.
   const char* run_column;
   double run_to_lab;
-  const char* standard_name;  // "ASTM D422", "Eq. 22 (sphere)", "Eq. 17 (pipette)"
+  const char* standard_name;  // "ASTM D7928", "Eq. 22 (sphere)", "Eq. 17 (pipette)"
 };
 const ReadingFormat& reading_format(Test test);
 
@@ -32,18 +33,24 @@ std::vector<Measurement> read_measurements_csv(std::istream& in, Test test);
 std::vector<GradingPoint> standard_reduction(const TestSetup& setup, Test test,
                                              const std::vector<Measurement>& data);
 
+// The specimen a 152H reduction of the setup's readings takes: its Gs, dry mass and the
+// suspension's volume (the cylinder's), so that the percent finer is of the mass per litre
+// whatever the cylinder holds. `sedem reduce`, invert's standard and a run's readings reduced
+// again all reduce through reduce_lab_readings with it.
+LabSpecimen lab_specimen(const TestSetup& setup);
+
 // A simulated test's readings as a laboratory records them: the instrument's own values
 // (152H R in g/L, the sphere's apparent mass and the pipette's dry mass in g) rounded to
 // `resolution` (0: the test's default), the 152H's less its reading in the setup's clear
 // liquid (what a composite correction removes, taken as exact); and their standard
-// reduction: ASTM D422 for the 152H (its effective depth; the specimen's mass per litre of
-// the setup's cylinder, as D422 assumes 1000 mL; 20 C), standard_reduction for the others.
-// The standard reduction is reading_format(test).standard_name.
+// reduction: reduce_lab_readings by `method` with lab_specimen for the 152H (its effective
+// depth; 20 C), standard_reduction for the others.
 struct RecordedTest {
   std::vector<Measurement> data;
   std::vector<GradingPoint> standard;
 };
 RecordedTest record_simulated(const TestSetup& setup, Test test, const std::vector<double>& times,
-                              const std::vector<double>& raw, double resolution = 0);
+                              const std::vector<double>& raw, double resolution = 0,
+                              LabMethod method = LabMethod::d7928);
 
 }  // namespace sedem::invert

@@ -20,4 +20,13 @@ ReadingBounds reading_bounds(const Eigen::MatrixXd& j, const Eigen::VectorXd& of
                              const Eigen::VectorXd& measured, const Eigen::VectorXd& tolerance,
                              double total = 1.0);
 
+// The same where a bin's response is known only to lie between two values, as when its mass
+// may sit anywhere inside it: reading i of bin shares x may be anything from offset + j_low x
+// to offset + j_high x (row by row), and a curve is kept when that range comes within the
+// tolerance of the measured reading. Every curve whose bins' responses do lie between the
+// two is kept, wherever inside its bins its mass sits.
+ReadingBounds reading_bounds(const Eigen::MatrixXd& j_low, const Eigen::MatrixXd& j_high,
+                             const Eigen::VectorXd& offset, const Eigen::VectorXd& measured,
+                             const Eigen::VectorXd& tolerance, double total = 1.0);
+
 }  // namespace sedem::invert

@@ -33,7 +33,8 @@ double specific_gravity_factor(double gs) {
 }
 
 double percent_finer(const LabReading& r, const LabSpecimen& s) {
-  const double dry_mass_g = s.dry_mass * 1e3;
+  // g per litre of suspension: the 152H reads g/L.
+  const double dry_mass_g = s.dry_mass * 1e3 / (s.suspension_volume * 1e3);
   return (r.reading - r.composite_correction) * specific_gravity_factor(s.specific_gravity) /
          dry_mass_g * 100.0;
 }
@@ -81,6 +82,9 @@ void validate_lab_readings(const std::vector<LabReading>& readings, const LabSpe
     throw InvalidLabReading(kSpecimen, "specific_gravity", s.specific_gravity,
                             "the soil must be denser than water and no denser than 10 (Gs in "
                             "(1, 10])");
+  if (!(s.suspension_volume > 0) || !std::isfinite(s.suspension_volume))
+    throw InvalidLabReading(kSpecimen, "suspension_volume_m3", s.suspension_volume,
+                            "the suspension's volume must be positive and finite");
   for (std::size_t i = 0; i < n; ++i) {
     const auto& r = readings[i];
     if (!(r.time > 0) || !std::isfinite(r.time))
@@ -101,6 +105,11 @@ void validate_lab_readings(const std::vector<LabReading>& readings, const LabSpe
                               "must be a number between -65 and 65 g/L (a correction wider than "
                               "the whole 152H scale is no correction)",
                               r.line);
+    if (!(r.meniscus_correction >= 0 && r.meniscus_correction <= kMaxMeniscusCorrection))
+      throw InvalidLabReading(i, "meniscus_correction_g_per_l", r.meniscus_correction,
+                              "must be between 0 and 5 g/L (the top of the meniscus reads low "
+                              "by about 1 g/L on a 152H)",
+                              r.line);
   }
 }
 
@@ -116,7 +125,7 @@ std::vector<LabPoint> reduce_astm_d422(const std::vector<LabReading>& readings,
     // G1: the water's specific gravity against water at 4 C (1000 kg/m^3 to 0.003 %).
     const double g1 = water::density(r.temperature) / 1000.0;
     const double k = std::sqrt(30.0 * eta_poise / (980.0 * (s.specific_gravity - g1)));
-    const double depth_cm = effective_depth_cm(r.reading);
+    const double depth_cm = effective_depth_cm(r.reading + r.meniscus_correction);
     const double time_min = r.time / 60.0;
     p.diameter = k * std::sqrt(depth_cm / time_min) * 1e-3;  // mm -> m
     p.effective_depth = depth_cm * 1e-2;
@@ -138,7 +147,7 @@ std::vector<LabPoint> reduce_astm_d7928(const std::vector<LabReading>& readings,
     LabPoint p;
     p.time = r.time;
     p.viscosity = water::viscosity(r.temperature);
-    p.effective_depth = effective_depth_cm(r.reading) * 1e-2;
+    p.effective_depth = effective_depth_cm(r.reading + r.meniscus_correction) * 1e-2;
     const double rho_w = water::density(r.temperature);
     p.diameter =
         std::sqrt(18.0 * p.viscosity * p.effective_depth / ((rho_solids - rho_w) * g * r.time));
@@ -148,6 +157,22 @@ std::vector<LabPoint> reduce_astm_d7928(const std::vector<LabReading>& readings,
     out.push_back(p);
   }
   return out;
+}
+
+LabMethod parse_lab_method(const std::string& name) {
+  if (name == "d7928") return LabMethod::d7928;
+  if (name == "d422") return LabMethod::d422;
+  throw std::invalid_argument("method '" + name + "': expected d7928 or d422");
+}
+
+std::string lab_method_name(LabMethod method) {
+  return method == LabMethod::d422 ? "ASTM D422" : "ASTM D7928";
+}
+
+std::vector<LabPoint> reduce_lab_readings(const std::vector<LabReading>& readings,
+                                          const LabSpecimen& specimen, LabMethod method) {
+  return method == LabMethod::d422 ? reduce_astm_d422(readings, specimen)
+                                   : reduce_astm_d7928(readings, specimen);
 }
 
 }  // namespace sedem

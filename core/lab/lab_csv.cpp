@@ -160,13 +160,15 @@ void check_lab_time_min(std::size_t line, double time_min) {
 std::vector<LabReading> read_lab_readings_csv(std::istream& in) {
   std::vector<LabReading> readings;
   std::vector<std::size_t> lines;
-  const auto rows = read_numeric_csv(in, {"time_min", "reading_g_per_l", "temperature_c"},
-                                     {"composite_correction_g_per_l"}, &lines);
+  const auto rows =
+      read_numeric_csv(in, {"time_min", "reading_g_per_l", "temperature_c"},
+                       {"composite_correction_g_per_l", "meniscus_correction_g_per_l"}, &lines);
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const auto& v = rows[i];
     check_lab_time_min(lines[i], v[0]);
-    // NaN here only for the optional column the header lacks: no correction.
-    readings.push_back({v[0] * 60.0, v[1], v[2], std::isnan(v[3]) ? 0.0 : v[3], lines[i]});
+    // NaN here only for an optional column the header lacks: no correction.
+    readings.push_back({v[0] * 60.0, v[1], v[2], std::isnan(v[3]) ? 0.0 : v[3],
+                        std::isnan(v[4]) ? 0.0 : v[4], lines[i]});
   }
   return readings;
 }

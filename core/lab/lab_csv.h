@@ -45,9 +45,9 @@ void check_lab_time_min(std::size_t line, double time_min);
 
 // Reads hydrometer readings in the laboratory's units, one per line, with a header naming
 // the columns (any order): time_min, reading_g_per_l, temperature_c and, optionally,
-// composite_correction_g_per_l (0 if the column is absent; a cell that is no finite number is
-// refused, never taken as 0). Times checked by check_lab_time_min. Returns them in SI (time
-// in s), each with its line.
+// composite_correction_g_per_l and meniscus_correction_g_per_l (0 if the column is absent; a
+// cell that is no finite number is refused, never taken as 0). Times checked by check_lab_time_min.
+// Returns them in SI (time in s), each with its line.
 std::vector<LabReading> read_lab_readings_csv(std::istream& in);
 
 // time_s, diameter_m, percent_finer, corrected_reading_g_per_l, effective_depth_m,

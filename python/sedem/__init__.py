@@ -283,10 +283,13 @@ def batch(scenes, out="out/batch", sweep=None, set=None, jobs=1, overwrite=False
     return read_csv(Path(out) / "summary.csv")
 
 
-def reduce(readings, method="d422", gs=2.65, mass_g=50.0, out=None, frame=True):
+def reduce(readings, method="d7928", gs=2.65, mass_g=50.0, out=None, frame=True,
+           volume_ml=1000.0):
     """`sedem reduce`: a laboratory's hydrometer readings (CSV with time_min,
-    reading_g_per_l, temperature_c) to diameters and percent finer. Returns the table."""
-    args = ["reduce", readings, "--method", method, "--gs", gs, "--mass-g", mass_g]
+    reading_g_per_l, temperature_c) to diameters and percent finer, ASTM D7928 or, with
+    method="d422", D422. Returns the table."""
+    args = ["reduce", readings, "--method", method, "--gs", gs, "--mass-g", mass_g,
+            "--volume-ml", volume_ml]
     if out is not None:
         _sedem(args + ["--out", out])
         return read_csv(out, frame=frame)

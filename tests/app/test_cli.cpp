@@ -278,7 +278,8 @@ TEST(Cli, ReduceFollowsAstmD422ByHand) {
   const fs::path dir = kOut / "reduce";
   fs::create_directories(dir);
   std::ofstream(dir / "lab.csv") << "time_min,reading_g_per_l,temperature_c\n2,40,20\n";
-  auto r = test::run_sedem("reduce " + (dir / "lab.csv").string() + " --mass-g 50 --gs 2.65");
+  auto r = test::run_sedem("reduce " + (dir / "lab.csv").string() +
+                           " --method d422 --mass-g 50 --gs 2.65");
   ASSERT_EQ(r.status, 0) << r.output;
   // By hand, ASTM D422 for a 152H at 20 C, Gs = 2.65: L = 16.29 - 0.164 x 40 = 9.73 cm,
   // K = sqrt(30 x 0.010017 / (980 x (2.65 - 0.99821))) = 0.013604 (the standard's table:

@@ -63,6 +63,31 @@ TEST(LabReduction, AstmD7928WorkedExample) {
   }
 }
 
+// The bulb's depth from the reading corrected for the meniscus only, the composite
+// correction the concentration's only; the percent finer of the mass per litre. With C_m =
+// 1 g/L on the worked example's R = 42, C = 5: L = 16.29 - 0.164 x 43 = 9.238 cm (not from
+// R - C = 37: 10.222 cm), D = K sqrt(9.238 / 2) = 0.02816201 mm; 50 g in 500 mL is 100 g/L:
+// P = 37 x 0.98890122 / 100 x 100 = 36.589345 %. D7928 the same depth:
+// sqrt(18 x 9.547756e-4 x 0.09238 / (1697.38524 x 9.80665 x 120)) = 2.819257e-5 m.
+TEST(LabReduction, DepthFromTheReadingPercentOfTheMassPerLitre) {
+  auto readings = worked_example();
+  for (auto& r : readings) r.meniscus_correction = 1.0;
+  const LabSpecimen specimen{2.70, 50e-3, 0.5e-3};
+  const auto d422 = reduce_lab_readings(readings, specimen, LabMethod::d422);
+  EXPECT_NEAR(d422[0].effective_depth * 1e2, 9.238, 1e-12);
+  EXPECT_NEAR(d422[0].diameter * 1e3, 0.02816201, 2e-6 * 0.02816201);
+  EXPECT_NEAR(d422[0].percent_finer, 36.589345, 1e-6);
+  EXPECT_NEAR(d422[0].corrected_reading, 37.0, 1e-12);
+  const auto d7928 = reduce_lab_readings(readings, specimen, parse_lab_method("d7928"));
+  EXPECT_NEAR(d7928[0].effective_depth * 1e2, 9.238, 1e-12);
+  EXPECT_NEAR(d7928[0].diameter, 2.819257e-5, 2e-6 * 2.819257e-5);
+  EXPECT_NEAR(d7928[0].percent_finer, 36.589345, 1e-6);
+  EXPECT_EQ(lab_method_name(LabMethod::d7928), "ASTM D7928");
+  EXPECT_THROW(parse_lab_method("d421"), std::invalid_argument);
+  readings[1].meniscus_correction = 7.0;
+  EXPECT_THROW(reduce_lab_readings(readings, specimen, LabMethod::d7928), InvalidLabReading);
+}
+
 // Expects reduce_astm_d422 to reject `readings` naming `row` (0-based), `field` and a
 // message containing `text`.
 void expect_rejected(const std::vector<LabReading>& readings, const LabSpecimen& specimen,
