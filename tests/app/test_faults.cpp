@@ -193,9 +193,11 @@ TEST(Faults, AFolderOfARunKilledBeforeItsFirstCheckpointIsTakenOver) {
 // 4. The first periodic checkpoint comes after about 10 s of wall time, whatever
 // run.checkpoint_interval_s (here its default, 3 min): a SIGKILL a moment after it loses only
 // that moment, and --resume ends exactly as the same run never stopped (run beside it).
+// Its run is long enough (400 s simulated, about 20 s of wall time on an idle machine) that the
+// kill always comes after the first checkpoint: a shorter one ended first and the test skipped.
 TEST(Faults, AKillAfterTheFirstTenSecondsResumesFromAnEarlyCheckpoint) {
   const fs::path whole = fresh("early_whole"), parts = fresh("early_parts");
-  const std::string scene = killable_demo("40") + " --set integrator.threads=1";
+  const std::string scene = killable_demo("400") + " --set integrator.threads=1";
   const std::string w = whole.string(), p = parts.string();
   auto r = test::run_sedem(
       "run " + scene + " --out " + w + " & whole=$!; " + SEDEM_EXE + " run " + scene + " --out " +
