@@ -247,7 +247,7 @@ int run_invert(const InvertOptions& o) {
   write_atomically(dir / "inverted_curve.csv", [&](std::ostream& csv) {
     if (o.partial) csv << "# " << partial_note << '\n';
     csv << "diameter_m,percent_finer,percent_finer_low,percent_finer_high,readings_allow_low,"
-           "readings_allow_high\n";
+           "readings_allow_high,readings_tell\n";
     for (std::size_t k = 0; k < curve.diameter.size(); ++k)
       csv << number(curve.diameter[k]) << ',' << number(curve.percent_finer[k]) << ','
           << (curve.lower.empty() ? "" : number(curve.lower[k])) << ','
@@ -255,6 +255,10 @@ int run_invert(const InvertOptions& o) {
           << (curve.bound_lower.empty() ? "" : number(curve.bound_lower_at(curve.diameter[k])))
           << ','
           << (curve.bound_upper.empty() ? "" : number(curve.bound_upper_at(curve.diameter[k])))
+          << ','
+          << (curve.open.empty() ? ""
+              : curve.open[k]    ? "0"
+                                 : "1")
           << '\n';
   });
   const std::string unit = test == Test::hydrometer ? "g_per_l" : "g";
@@ -306,6 +310,12 @@ int run_invert(const InvertOptions& o) {
       j["readings_allow"] = {{"widest_pp", open.width},
                              {"at_diameter_m", open.diameter},
                              {"tolerance", curve.bound_tolerance}};
+    if (!curve.open.empty()) {
+      nlohmann::json ranges = nlohmann::json::array();
+      for (const auto& [from, to] : curve.open_ranges()) ranges.push_back({from, to});
+      j["readings_cannot_tell"] = {{"bounds_wider_than_pp", curve.open_width},
+                                   {"diameter_ranges_m", ranges}};
+    }
     if (!truth.empty())
       j["true_curve_error_pp"] = {{"inverted", inverted_error}, {"standard", standard_error}};
     write_atomically(dir / "invert.json", [&](std::ostream& f) { f << j.dump(2) << '\n'; });
@@ -323,6 +333,11 @@ int run_invert(const InvertOptions& o) {
   fig.bound_diameter_m = curve.bound_diameter;
   fig.bound_lower = curve.bound_lower;
   fig.bound_upper = curve.bound_upper;
+  for (std::size_t k = 0; k < curve.open.size(); ++k)
+    if (curve.open[k]) {
+      fig.open_diameter_m.push_back(curve.diameter[k]);
+      fig.open_percent_finer.push_back(curve.percent_finer[k]);
+    }
   fig.standard_name = standard_name;
   for (const auto& p : standard) {
     fig.standard_diameter_m.push_back(p.diameter);
@@ -351,6 +366,12 @@ int run_invert(const InvertOptions& o) {
           "they resolve): there the curve is the smoothing's choice\n",
           curve.bound_lower_at(open.diameter), curve.bound_upper_at(open.diameter),
           open.diameter * 1e6);
+    for (const auto& [from, to] : curve.open_ranges())
+      std::printf(
+          "the readings cannot tell the curve from %.3g to %.3g um: they allow curves more than "
+          "%.0f pp apart there (%.1f to %.1f %% at %.3g um); the band there is what they allow\n",
+          from * 1e6, to * 1e6, curve.open_width, curve.bound_lower_at(from),
+          curve.bound_upper_at(to), to * 1e6);
     if (!truth.empty())
       std::printf(
           "against the run's true curve: inverted %.2f pp, %s %.2f pp (largest, at the "

@@ -142,15 +142,20 @@ TEST(InvertCommand, ClayLoamRecordWritesCurveBandAndFigure) {
   std::getline(curve, header);
   EXPECT_EQ(header,
             "diameter_m,percent_finer,percent_finer_low,percent_finer_high,readings_allow_low,"
-            "readings_allow_high");
+            "readings_allow_high,readings_tell");
   int nodes = 0;
   for (std::string line; std::getline(curve, line); ++nodes) {
     std::vector<double> v;
     std::stringstream row(line);
     for (std::string cell; std::getline(row, cell, ',');) v.push_back(std::stod(cell));
-    ASSERT_EQ(v.size(), 6u) << line;
+    ASSERT_EQ(v.size(), 7u) << line;
     EXPECT_LE(v[4], v[1] + 1e-6) << line;
     EXPECT_GE(v[5], v[1] - 1e-6) << line;
+    // Where the readings cannot tell (bounds wider than 40 pp), the band is what they allow.
+    EXPECT_EQ(v[6], v[5] - v[4] > 40 ? 0 : 1) << line;
+    if (v[6] == 0) {
+      EXPECT_TRUE(v[2] <= v[4] + 1e-6 && v[3] >= v[5] - 1e-6) << line;
+    }
   }
   EXPECT_GT(nodes, 7);
   const auto allow = summary.at("readings_allow");
