@@ -5,6 +5,7 @@
 #include <QByteArray>
 #include <QString>
 #include <QXmlStreamReader>
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -144,7 +145,8 @@ int column_of(const std::string& reference) {
   int column = 0;
   std::size_t i = 0;
   for (; i < reference.size() && reference[i] >= 'A' && reference[i] <= 'Z'; ++i)
-    column = column * 26 + (reference[i] - 'A' + 1);
+    // Past the columns read it no longer matters how far: no overflow on "ZZZZZZZZZZ1".
+    column = std::min(column * 26 + (reference[i] - 'A' + 1), kMaxColumns + 1);
   return i == 0 ? -1 : column - 1;
 }
 

@@ -2,6 +2,7 @@
 
     make_workbook.py lab.xlsx       # openpyxl: a notes sheet, the readings, the sieves
     make_workbook.py shared.xlsx    # by hand: shared strings, as Excel and LibreOffice save
+    make_workbook.py damaged.xlsx   # shared.xlsx with a cell reference past any column
 
 The first is what openpyxl (Debian's python3-openpyxl 3.0) saves: text as inline strings,
 numbers, empty cells and rows, a text cell with a decimal comma. The second what Excel and
@@ -42,7 +43,7 @@ def relationships(rid, kind, target):
 </Relationships>"""
 
 
-def shared_workbook(path):
+def shared_workbook(path, damaged=False):
     # The smallest package a reader must take: content types, the workbook, its relations,
     # the shared strings and one sheet.
     parts = {
@@ -77,6 +78,9 @@ def shared_workbook(path):
 <row r="6"><c r="A6"><v>86400</v></c><c r="B6" t="str"><f>10*1</f><v>10</v></c><c r="C6"><v>22</v></c><c r="D6"><v>5</v></c></row>
 </sheetData></worksheet>""",
     }
+    if damaged:  # a reader that trusts the reference overflows or allocates without bound
+        parts["xl/worksheets/data.xml"] = parts["xl/worksheets/data.xml"].replace(
+            '<c r="A5">', '<c r="ZZZZZZZZZZZZZZZZ5">')
     with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as z:
         for name, text in parts.items():
             z.writestr(name, text)
@@ -84,4 +88,7 @@ def shared_workbook(path):
 
 if __name__ == "__main__":
     out = sys.argv[1]
-    (shared_workbook if out.endswith("shared.xlsx") else lab_workbook)(out)
+    if out.endswith("shared.xlsx") or out.endswith("damaged.xlsx"):
+        shared_workbook(out, damaged=out.endswith("damaged.xlsx"))
+    else:
+        lab_workbook(out)

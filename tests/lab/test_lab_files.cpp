@@ -89,6 +89,14 @@ TEST(LabFiles, XlsxWithSharedStrings) {
   EXPECT_DOUBLE_EQ(readings[2].time, 86400.0);
   EXPECT_EQ(readings[2].line, 6u);
   expect_worked_example(readings);
+  // A cell reference past any column: that cell is left out (no overflow, no huge row), and
+  // the row then lacks its time.
+  try {
+    read_lab_readings(app::read_xlsx_table(workbook("damaged.xlsx")));
+    ADD_FAILURE() << "read a row without its time";
+  } catch (const LabCsvError& e) {
+    EXPECT_STREQ(e.what(), "row 5, column 'elapsed time, s': '' is not a number");
+  }
   // Not a workbook at all.
   const fs::path fake = write("fake.xlsx", "time_min,reading_g_per_l\n");
   EXPECT_THROW(app::read_xlsx_table(fake), std::invalid_argument);
