@@ -377,6 +377,10 @@ int run_invert(const InvertOptions& o) {
         inverted_points.push_back({curve.diameter[k], curve.percent_finer[k], NAN});
     whole = whole_curve(sieve->points, o.lab.separating_sieve_mm, test_name(test), standard_points);
     add_to_whole_curve(whole, sieve->passing_separating, "inverted", inverted_points);
+    if (const std::string conflict = whole_curve_conflict(whole); !conflict.empty()) {
+      std::fprintf(stderr, "sedem: warning: %s\n", conflict.c_str());
+      sieve->warnings.push_back(conflict);
+    }
     write_atomically(dir / "whole_curve.csv",
                      [&](std::ostream& csv) { write_whole_curve_csv(csv, whole, partial_note); });
     render::write_lab_curve_figure("Whole grading curve: sieves (ASTM D6913), " + standard_name +

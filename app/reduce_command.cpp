@@ -135,6 +135,10 @@ int run_reduce(const ReduceOptions& options) {
     for (const auto& p : points) sedimentation.push_back({p.diameter, p.percent_finer, p.time});
     curve =
         whole_curve(sieve->points, options.lab.separating_sieve_mm, "hydrometer", sedimentation);
+    if (const std::string conflict = whole_curve_conflict(curve); !conflict.empty()) {
+      std::fprintf(stderr, "sedem: warning: %s\n", conflict.c_str());
+      sieve->warnings.push_back(conflict);
+    }
   } else {
     for (const auto& p : points)
       curve.push_back({"hydrometer", p.diameter, p.percent_finer, p.time, p.percent_finer, NAN});

@@ -62,6 +62,30 @@ std::vector<CurvePoint> whole_curve(const std::vector<SievePoint>& sieves, doubl
   return curve;
 }
 
+std::string whole_curve_conflict(const std::vector<CurvePoint>& curve) {
+  const CurvePoint *worst_point = nullptr, *worst_sieve = nullptr;
+  double worst = kWholeCurveTolerancePp;
+  for (const auto& p : curve) {
+    if (p.source == "sieve") continue;
+    for (const auto& s : curve)
+      if (s.source == "sieve" && s.diameter > p.diameter &&
+          p.percent_finer - s.percent_finer > worst) {
+        worst = p.percent_finer - s.percent_finer;
+        worst_point = &p;
+        worst_sieve = &s;
+      }
+  }
+  if (!worst_point) return "";
+  std::ostringstream why;
+  why.precision(3);
+  why << "the " << worst_point->source << "'s " << worst_point->percent_finer << " % finer at "
+      << worst_point->diameter * 1e6 << " um is above the " << worst_sieve->percent_finer
+      << " % passing the " << worst_sieve->diameter * 1e3
+      << " mm sieve: a curve cannot rise toward finer sizes (check the separating sieve, the "
+         "dry masses and the sieves)";
+  return why.str();
+}
+
 void write_whole_curve_csv(std::ostream& out, const std::vector<CurvePoint>& curve,
                            const std::string& note) {
   if (!note.empty()) out << "# " << note << '\n';

@@ -46,6 +46,17 @@ void add_to_whole_curve(std::vector<CurvePoint>& curve, double passing_percent,
                         const std::string& source,
                         const std::vector<SedimentationPoint>& sedimentation);
 
+// The tolerance, pp, within which a finer point may read above a coarser sieve (reading
+// scatter) before whole_curve_conflict says so.
+inline constexpr double kWholeCurveTolerancePp = 2.0;
+
+// A grading curve never rises toward finer sizes: the largest excess, beyond
+// kWholeCurveTolerancePp, of a sedimentation point's percent finer over a coarser sieve's
+// percent passing, in words ("the hydrometer's 62.2 % finer at 28.4 µm is above the 50 %
+// passing the 0.075 mm sieve"), or "" when there is none. A separating sieve or dry mass that
+// does not belong to the readings shows this way.
+std::string whole_curve_conflict(const std::vector<CurvePoint>& curve);
+
 // source, diameter_m, diameter_mm, diameter_um, percent_finer, time_s, time_min,
 // percent_finer_of_fraction, mass_retained_g (empty cells where a source has no value).
 void write_whole_curve_csv(std::ostream& out, const std::vector<CurvePoint>& curve,

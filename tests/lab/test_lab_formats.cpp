@@ -197,6 +197,14 @@ TEST(LabFormats, SieveAndHydrometerMergeIntoTheWholeCurve) {
             "percent_finer_of_fraction,mass_retained_g");
   EXPECT_NE(text.find("\nsieve,0.002,2,2000,85,,,,18\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nhydrometer,"), std::string::npos);
+  // These made-up readings say 62.2 % finer at 28.4 µm where the sieves let 50 % pass 75 µm:
+  // no curve does that, and the merge says so.
+  EXPECT_EQ(whole_curve_conflict(curve),
+            "the hydrometer's 62.2 % finer at 28.4 um is above the 50 % passing the 0.075 mm "
+            "sieve: a curve cannot rise toward finer sizes (check the separating sieve, the dry "
+            "masses and the sieves)");
+  // Separated on the No. 200 (50 % passing) they fit: 36.6 % finer at 28.4 µm.
+  EXPECT_EQ(whole_curve_conflict(whole_curve(sieves, 0.075, "hydrometer", sedimentation)), "");
   // A separating sieve the analysis lacks is named, with the openings there are.
   try {
     whole_curve(sieves, 0.85, "hydrometer", sedimentation);
