@@ -68,8 +68,10 @@ void write_invert_lab_report(const InvertReportInput& in, const std::filesystem:
   optional("clear liquid's density (kg/m³)", o.liquid_density);
   optional("sphere's blank (g)", o.blank_g);
   optional("pipette volume (mL)", o.pipette_ml);
-  report.inputs.push_back({"band", report_number(100 * in.curve.coverage, 3) + " % of " +
-                                       std::to_string(in.curve.replicas) + " replicas"});
+  report.inputs.push_back({"band", in.curve.replicas > 0
+                                       ? report_number(100 * in.curve.coverage, 3) + " % of " +
+                                             std::to_string(in.curve.replicas) + " replicas"
+                                       : std::string("none (--replicas 0)")});
   if (in.sieve) {
     report.inputs.push_back({"sieve analysis", o.lab.sieve});
     report.inputs.push_back({"total dry mass (g)", report_number(in.sieve->total_g, 6)});

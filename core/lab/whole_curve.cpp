@@ -78,8 +78,8 @@ std::string whole_curve_conflict(const std::vector<CurvePoint>& curve) {
   if (!worst_point) return "";
   std::ostringstream why;
   why.precision(3);
-  why << "the " << worst_point->source << "'s " << worst_point->percent_finer << " % finer at "
-      << worst_point->diameter * 1e6 << " um is above the " << worst_sieve->percent_finer
+  why << worst_point->source << ": " << worst_point->percent_finer << " % finer at "
+      << worst_point->diameter * 1e6 << " um, above the " << worst_sieve->percent_finer
       << " % passing the " << worst_sieve->diameter * 1e3
       << " mm sieve: a curve cannot rise toward finer sizes (check the separating sieve, the "
          "dry masses and the sieves)";

@@ -52,8 +52,8 @@ inline constexpr double kWholeCurveTolerancePp = 2.0;
 
 // A grading curve never rises toward finer sizes: the largest excess, beyond
 // kWholeCurveTolerancePp, of a sedimentation point's percent finer over a coarser sieve's
-// percent passing, in words ("the hydrometer's 62.2 % finer at 28.4 µm is above the 50 %
-// passing the 0.075 mm sieve"), or "" when there is none. A separating sieve or dry mass that
+// percent passing, in words ("hydrometer: 62.2 % finer at 28.4 um, above the 50 % passing the
+// 0.075 mm sieve: ..."), or "" when there is none. A separating sieve or dry mass that
 // does not belong to the readings shows this way.
 std::string whole_curve_conflict(const std::vector<CurvePoint>& curve);
 

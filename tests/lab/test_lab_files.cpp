@@ -168,7 +168,7 @@ TEST(LabFiles, SieveAndHydrometerToTheWholeCurveWithItsReport) {
       "reduce " + book.string() + " --sheet Readings --gs 2.70 --sieve " + book.string() +
       " --sieve-sheet Sieves --out " + out.string() + " --report " + report.string());
   ASSERT_EQ(r.status, 0) << r.output;
-  EXPECT_NE(r.output.find("sedem: warning: the hydrometer's 62.2 % finer at 28.4 um"),
+  EXPECT_NE(r.output.find("sedem: warning: hydrometer: 62.2 % finer at 28.4 um, above"),
             std::string::npos)
       << r.output;
   std::ifstream in(out);

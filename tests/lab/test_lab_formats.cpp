@@ -200,7 +200,7 @@ TEST(LabFormats, SieveAndHydrometerMergeIntoTheWholeCurve) {
   // These made-up readings say 62.2 % finer at 28.4 µm where the sieves let 50 % pass 75 µm:
   // no curve does that, and the merge says so.
   EXPECT_EQ(whole_curve_conflict(curve),
-            "the hydrometer's 62.2 % finer at 28.4 um is above the 50 % passing the 0.075 mm "
+            "hydrometer: 62.2 % finer at 28.4 um, above the 50 % passing the 0.075 mm "
             "sieve: a curve cannot rise toward finer sizes (check the separating sieve, the dry "
             "masses and the sieves)");
   // Separated on the No. 200 (50 % passing) they fit: 36.6 % finer at 28.4 µm.
