@@ -44,22 +44,27 @@ void add_lab_input_options(CLI::App* command, sedem::app::LabInputOptions& lab,
                            const std::string& whole) {
   command->add_option("--sheet", lab.sheet,
                       "The readings' sheet of an .xlsx workbook (default: the first)");
-  command->add_option("--sieve", lab.sieve,
-                      "The sample's sieve analysis (ASTM D6913): opening (mm) and mass "
-                      "retained (g) per sieve, a pan and a total row; " +
-                          whole);
-  command->add_option("--sieve-sheet", lab.sieve_sheet,
-                      "The sieve analysis' sheet of an .xlsx workbook (default: the first)");
+  auto* sieve = command->add_option("--sieve", lab.sieve,
+                                    "The sample's sieve analysis (ASTM D6913): opening (mm) and "
+                                    "mass retained (g) per sieve, a pan and a total row; " +
+                                        whole);
+  // Without --sieve these would be ignored: refused instead.
+  command
+      ->add_option("--sieve-sheet", lab.sieve_sheet,
+                   "The sieve analysis' sheet of an .xlsx workbook (default: the first)")
+      ->needs(sieve);
   command
       ->add_option("--sieve-total-g", lab.sieve_total_g,
                    "The sample's total dry mass, g (default: the sieve file's total row, or "
                    "the sum of its sieves and pan)")
-      ->check(CLI::Range(1e-3, 1e6));
+      ->check(CLI::Range(1e-3, 1e6))
+      ->needs(sieve);
   command
       ->add_option("--separating-sieve-mm", lab.separating_sieve_mm,
                    "The sieve the tested specimen passed, mm (No. 10: 2; No. 200: 0.075)")
       ->check(CLI::Range(0.02, 100.0))
-      ->capture_default_str();
+      ->capture_default_str()
+      ->needs(sieve);
 }
 
 }  // namespace

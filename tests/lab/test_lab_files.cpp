@@ -207,6 +207,12 @@ TEST(LabFiles, SieveAndHydrometerToTheWholeCurveWithItsReport) {
                       book.string() + " --sieve-sheet Sieves --separating-sieve-mm 0.85");
   EXPECT_EQ(no.status, 2);
   EXPECT_NE(no.output.find("the separating sieve (0.85 mm"), std::string::npos) << no.output;
+  // The sieve's options without a sieve analysis would be ignored: a bad command line.
+  const auto alone =
+      test::run_sedem("reduce " + book.string() + " --sheet Readings --separating-sieve-mm 0.075");
+  EXPECT_EQ(alone.status, 1);
+  EXPECT_NE(alone.output.find("--separating-sieve-mm requires --sieve"), std::string::npos)
+      << alone.output;
 }
 
 // `sedem invert` takes the same files: the whole curve holds the sieves, the standard
