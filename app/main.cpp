@@ -38,6 +38,35 @@ std::string suggestion(const std::string& typed, const std::vector<std::string>&
   return best.empty() ? "" : "; did you mean '" + best + "'?";
 }
 
+// The options `reduce` and `invert` share for a laboratory's files (docs/lab.md); `whole`
+// says what the sieve analysis makes of the output.
+void add_lab_input_options(CLI::App* command, sedem::app::LabInputOptions& lab,
+                           const std::string& whole) {
+  command->add_option("--sheet", lab.sheet,
+                      "The readings' sheet of an .xlsx workbook (default: the first)");
+  auto* sieve = command->add_option("--sieve", lab.sieve,
+                                    "The sample's sieve analysis (ASTM D6913): opening (mm) and "
+                                    "mass retained (g) per sieve, a pan and a total row; " +
+                                        whole);
+  // Without --sieve these would be ignored: refused instead.
+  command
+      ->add_option("--sieve-sheet", lab.sieve_sheet,
+                   "The sieve analysis' sheet of an .xlsx workbook (default: the first)")
+      ->needs(sieve);
+  command
+      ->add_option("--sieve-total-g", lab.sieve_total_g,
+                   "The sample's total dry mass, g (default: the sieve file's total row, or "
+                   "the sum of its sieves and pan)")
+      ->check(CLI::Range(1e-3, 1e6))
+      ->needs(sieve);
+  command
+      ->add_option("--separating-sieve-mm", lab.separating_sieve_mm,
+                   "The sieve the tested specimen passed, mm (No. 10: 2; No. 200: 0.075)")
+      ->check(CLI::Range(0.02, 100.0))
+      ->capture_default_str()
+      ->needs(sieve);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -128,9 +157,14 @@ int main(int argc, char** argv) {
       "Reduce laboratory hydrometer readings (152H) to a grading curve, ASTM D7928 or D422");
   reduce_cmd
       ->add_option("readings", reduce_options.readings,
-                   "CSV with columns time_min, reading_g_per_l, temperature_c and optionally "
-                   "composite_correction_g_per_l, meniscus_correction_g_per_l")
+                   "CSV (',' or ';' with decimal commas), tab-separated text or .xlsx with "
+                   "columns time_min, reading_g_per_l, temperature_c and optionally "
+                   "composite_correction_g_per_l, meniscus_correction_g_per_l, or the same in "
+                   "the lab's words and units: time (min), R (g/L), T (°C), ...")
       ->required();
+  add_lab_input_options(reduce_cmd, reduce_options.lab, "the output is then the whole curve");
+  reduce_cmd->add_option("--report", reduce_options.report,
+                         "Write a one-page lab report (HTML) and its figure beside it");
   reduce_cmd->add_option("--out", reduce_options.out, "Output CSV (default: standard output)");
   reduce_cmd
       ->add_option("--method", reduce_options.method,
@@ -154,8 +188,11 @@ int main(int argc, char** argv) {
       "reproduces them, with an uncertainty band, beside the standard reduction");
   auto* invert_readings = invert_cmd->add_option(
       "readings", invert_options.readings,
-      "CSV: hydrometer as for reduce; buoyancy time_min, apparent_mass_g; pipette "
-      "time_min, dry_mass_g");
+      "CSV, tab-separated text or .xlsx: hydrometer as for reduce; buoyancy time_min, "
+      "apparent_mass_g; pipette time_min, dry_mass_g (or in the lab's words and units: "
+      "time (s), apparent mass (g), dry mass (mg), ...)");
+  add_lab_input_options(invert_cmd, invert_options.lab,
+                        "whole_curve.csv then holds the whole grading curve");
   auto* invert_run =
       invert_cmd
           ->add_option("--run", invert_options.run,

@@ -22,8 +22,10 @@ _sedem() {
     batch) opts="--sweep --seeds --seed0 --out --set --jobs -j --overwrite --quiet -q --help -h" ;;
     render) opts="--out --partial --quiet -q --help -h" ;;
     paraview) opts="--pvpython --time --screenshot --quiet -q --help -h" ;;
-    reduce) opts="--out --method --gs --mass-g --volume-ml --help -h" ;;
+    reduce) opts="--out --method --gs --mass-g --volume-ml --sheet --sieve --sieve-sheet
+      --sieve-total-g --separating-sieve-mm --report --help -h" ;;
     invert) opts="--run --partial --test --scene --out --method --gs --mass-g --volume-ml --area-cm2
+      --sheet --sieve --sieve-sheet --sieve-total-g --separating-sieve-mm
       --depth-cm --temperature-c --liquid-density --blank-g --pipette-ml --resolution --refine
       --replicas --coverage --seed --quiet -q --help -h" ;;
     design) opts="--test --readings --out --set --dem-count --sizes --quiet -q --help -h" ;;
@@ -36,7 +38,10 @@ _sedem() {
     --run) COMPREPLY=($(compgen -d -- "$cur")); return ;;
     --scene) COMPREPLY=($(compgen -f -X '!*.toml' -- "$cur") $(compgen -d -- "$cur")); return ;;
     --pvpython|--screenshot) COMPREPLY=($(compgen -f -- "$cur")); return ;;
+    --sieve) COMPREPLY=($(compgen -f -- "$cur")); return ;;
+    --report) COMPREPLY=($(compgen -f -X '!*.html' -- "$cur") $(compgen -d -- "$cur")); return ;;
     --set|--time|--sweep|--seeds|--seed0|--gs|--mass-g|--jobs|-j|--readings|--dem-count|--sizes) return ;;
+    --sheet|--sieve-sheet|--sieve-total-g|--separating-sieve-mm) return ;;
   esac
   if [[ $cur == -* ]]; then
     COMPREPLY=($(compgen -W "$opts" -- "$cur"))
@@ -45,7 +50,7 @@ _sedem() {
   case $command in
     run|batch|design) COMPREPLY=($(compgen -f -X '!*.toml' -- "$cur") $(compgen -d -- "$cur")) ;;
     render|paraview) COMPREPLY=($(compgen -d -- "$cur")) ;;
-    reduce|invert) COMPREPLY=($(compgen -f -X '!*.csv' -- "$cur") $(compgen -d -- "$cur")) ;;
+    reduce|invert) COMPREPLY=($(compgen -f -- "$cur")) ;;
     bench) COMPREPLY=($(compgen -W "engine accuracy speedup" -- "$cur")) ;;
   esac
 }

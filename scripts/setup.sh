@@ -20,12 +20,16 @@ build_only=false
 packages=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev coinor-libclp-dev
+  # .xlsx workbooks of laboratory readings are zip archives.
+  libzip-dev
   libvtk9-dev qt6-base-dev libcairo2-dev fonts-dejavu-core
   libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev libglew-dev
   libgtest-dev googletest clang-format
 )
 $build_only || packages+=(
   python3 python3-numpy python3-vtk9 python3-matplotlib python3-pytest
+  # The lab-file tests write their .xlsx workbooks with openpyxl.
+  python3-openpyxl
   # The figure tests render every SVG and PDF the way readers open them.
   librsvg2-bin poppler-utils
   # ParaView's pvpython (unpacked below): its libraries' dependencies, and an X server for
