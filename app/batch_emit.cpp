@@ -109,6 +109,17 @@ int emit_batch(const BatchOptions& options, const std::vector<BatchRun>& runs) {
       return exit_code::usage;
     }
   }
+  if (options.scheduler == "parallel") {
+    const SlurmOptions defaults;
+    const SlurmOptions& given = options.slurm;
+    if (given.time != defaults.time || !given.mem.empty() || given.cpus != defaults.cpus ||
+        !given.partition.empty() || !given.account.empty()) {
+      std::fprintf(stderr,
+                   "sedem: the --slurm-* options go with --emit slurm; GNU parallel's runs take "
+                   "one core each (--jobs: runs at once)\n");
+      return exit_code::usage;
+    }
+  }
   Resolved resolved;
   try {
     resolved = resolve_scenes(runs);

@@ -94,7 +94,8 @@ int main(int argc, char** argv) {
   batch_cmd->add_option("--seed0", batch_options.seed0,
                         "The first seed of --seeds (default 1): seed0, seed0 + 1, ...");
   batch_cmd->add_flag("--overwrite", batch_options.overwrite,
-                      "Replace the runs that the sub-folders hold");
+                      "Replace the runs that the sub-folders hold (with --emit: each task "
+                      "replaces its folder's run instead of going on with it)");
   batch_cmd->add_flag("-q,--quiet", batch_options.quiet, "Print only warnings and errors");
   auto* batch_emit =
       batch_cmd

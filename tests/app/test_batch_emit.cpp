@@ -254,6 +254,9 @@ TEST(BatchEmit, RefusesWhatCannotBecomeTasks) {
   EXPECT_NE(r.output.find("--slurm-cpus"), std::string::npos) << r.output;
   r = run_sedem(batch + " --slurm-time 10");
   EXPECT_EQ(r.status, 1) << r.output;
+  r = run_sedem(batch + " --emit parallel --slurm-mem 2G");
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find("go with --emit slurm"), std::string::npos) << r.output;
   r = run_sedem(batch + " --emit pbs");
   EXPECT_EQ(r.status, 1) << r.output;
   // A scene that cannot run stops the whole batch before anything is written.
