@@ -170,6 +170,17 @@ int emit_batch(const BatchOptions& options, const std::vector<BatchRun>& runs) {
     std::fprintf(stderr, "sedem: cannot write the batch's tasks: %s\n", e.what());
     return exit_code::output_unwritable;
   }
+  // A folder that holds a run already keeps it: its task goes on with it, or leaves it if it
+  // is complete, whatever this emit's scene says, unless --overwrite.
+  const auto held = std::count_if(runs.begin(), runs.end(), [&](const BatchRun& r) {
+    return fs::exists(t.dir / r.folder / "run.json");
+  });
+  if (held > 0 && !options.overwrite)
+    std::fprintf(stderr,
+                 "sedem: warning: %td of the %zu run folders hold a run already: their tasks go "
+                 "on with it, or leave it if it is complete (--overwrite: the tasks replace "
+                 "them)\n",
+                 held, runs.size());
   if (!options.quiet) print_next_steps(options, t, runs.size(), mem);
   return exit_code::ok;
 }

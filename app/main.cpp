@@ -76,11 +76,13 @@ int main(int argc, char** argv) {
       "Run several scenes, or one scene over a sweep of a key, each into a sub-folder; or write "
       "them as tasks for Slurm or GNU parallel (--emit) and summarise them when done (--gather)");
   auto* batch_scenes = batch_cmd->add_option("scenes", batch_options.scenes, "Scene files (TOML)");
-  batch_cmd->add_option("--sweep", batch_options.sweep,
-                        "One run per value: key=v1,v2,... (e.g. sample.simulated_count=1e3,1e4)");
-  batch_cmd->add_option("--out", batch_options.out_dir, "Parent output folder")
-      ->capture_default_str();
-  batch_cmd->add_option("--set", batch_options.overrides, "Override a key in every run");
+  auto* batch_sweep = batch_cmd->add_option(
+      "--sweep", batch_options.sweep,
+      "One run per value: key=v1,v2,... (e.g. sample.simulated_count=1e3,1e4)");
+  auto* batch_out = batch_cmd->add_option("--out", batch_options.out_dir, "Parent output folder")
+                        ->capture_default_str();
+  auto* batch_set =
+      batch_cmd->add_option("--set", batch_options.overrides, "Override a key in every run");
   auto* batch_jobs =
       batch_cmd
           ->add_option("-j,--jobs", batch_options.jobs,
@@ -88,14 +90,17 @@ int main(int argc, char** argv) {
                        "with --emit parallel, parallel's --jobs (default: one per core)")
           ->check(CLI::Range(1, 256))
           ->capture_default_str();
-  batch_cmd->add_option("--seeds", batch_options.seeds,
-                        "Runs per scene (and swept value) differing only in sample.seed, "
-                        "1 to 10000; from 2, summary_stats.csv: mean and 95 % interval");
-  batch_cmd->add_option("--seed0", batch_options.seed0,
-                        "The first seed of --seeds (default 1): seed0, seed0 + 1, ...");
-  batch_cmd->add_flag("--overwrite", batch_options.overwrite,
-                      "Replace the runs that the sub-folders hold (with --emit: each task "
-                      "replaces its folder's run instead of going on with it)");
+  auto* batch_seeds =
+      batch_cmd->add_option("--seeds", batch_options.seeds,
+                            "Runs per scene (and swept value) differing only in sample.seed, "
+                            "1 to 10000; from 2, summary_stats.csv: mean and 95 % interval");
+  auto* batch_seed0 =
+      batch_cmd->add_option("--seed0", batch_options.seed0,
+                            "The first seed of --seeds (default 1): seed0, seed0 + 1, ...");
+  auto* batch_overwrite =
+      batch_cmd->add_flag("--overwrite", batch_options.overwrite,
+                          "Replace the runs that the sub-folders hold (with --emit: each task "
+                          "replaces its folder's run instead of going on with it)");
   batch_cmd->add_flag("-q,--quiet", batch_options.quiet, "Print only warnings and errors");
   auto* batch_emit =
       batch_cmd
@@ -131,7 +136,10 @@ int main(int argc, char** argv) {
       ->add_option("--slurm-account", batch_options.slurm.account,
                    "With --emit slurm: the account charged (default: the user's)")
       ->needs(batch_emit);
-  batch_gather->excludes(batch_scenes)->excludes(batch_emit)->excludes(batch_jobs);
+  // A gathered batch is the one its plan says: nothing of the command line changes it.
+  for (auto* option : {batch_scenes, batch_sweep, batch_out, batch_set, batch_jobs, batch_seeds,
+                       batch_seed0, batch_overwrite, batch_emit})
+    batch_gather->excludes(option);
   batch_cmd->callback([&] {
     if (batch_options.scenes.empty() && gather_dir.empty())
       throw CLI::RequiredError("scene files, or --gather DIR");

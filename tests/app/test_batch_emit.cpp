@@ -237,6 +237,12 @@ TEST(BatchEmit, TasksRunByHandThenGatheredGiveTheLocalSummary) {
   r = run_sedem("batch --gather " + dir.string() + " --quiet");
   EXPECT_EQ(r.status, 0) << r.output;
   expect_local_summary(dir);
+  // Emitting again over the finished runs keeps them, and says so.
+  r = run_sedem("batch " + kDemo + " --out " + dir.string() + kTiny + " --emit slurm");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("10 of the 10 run folders hold a run already"), std::string::npos)
+      << r.output;
+  EXPECT_EQ(read_text(dir / seed_folder(1) / "run.json"), record);
 }
 
 TEST(BatchEmit, RefusesWhatCannotBecomeTasks) {
@@ -270,6 +276,8 @@ TEST(BatchEmit, RefusesWhatCannotBecomeTasks) {
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("batch.json: cannot read it"), std::string::npos) << r.output;
   r = run_sedem("batch " + kDemo + " --gather " + dir.string());
+  EXPECT_EQ(r.status, 1) << r.output;
+  r = run_sedem("batch --gather " + dir.string() + " --seeds 3");
   EXPECT_EQ(r.status, 1) << r.output;
 }
 
