@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/batch_command.h"
+#include "app/batch_gather.h"
 #include "app/bench_command.h"
 #include "app/design_command.h"
 #include "app/exit_codes.h"
@@ -98,27 +99,81 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("-q,--quiet", run_options.quiet, "Print only warnings and errors");
 
   BatchOptions batch_options;
+  std::string gather_dir;
   auto* batch_cmd = cli.add_subcommand(
-      "batch", "Run several scenes, or one scene over a sweep of a key, each into a sub-folder");
-  batch_cmd->add_option("scenes", batch_options.scenes, "Scene files (TOML)")->required();
-  batch_cmd->add_option("--sweep", batch_options.sweep,
-                        "One run per value: key=v1,v2,... (e.g. sample.simulated_count=1e3,1e4)");
-  batch_cmd->add_option("--out", batch_options.out_dir, "Parent output folder")
-      ->capture_default_str();
-  batch_cmd->add_option("--set", batch_options.overrides, "Override a key in every run");
-  batch_cmd
-      ->add_option("-j,--jobs", batch_options.jobs,
-                   "Runs at once, each given its share of the cores (integrator.threads)")
-      ->check(CLI::Range(1, 256))
-      ->capture_default_str();
-  batch_cmd->add_option("--seeds", batch_options.seeds,
-                        "Runs per scene (and swept value) differing only in sample.seed, "
-                        "1 to 10000; from 2, summary_stats.csv: mean and 95 % interval");
-  batch_cmd->add_option("--seed0", batch_options.seed0,
-                        "The first seed of --seeds (default 1): seed0, seed0 + 1, ...");
-  batch_cmd->add_flag("--overwrite", batch_options.overwrite,
-                      "Replace the runs that the sub-folders hold");
+      "batch",
+      "Run several scenes, or one scene over a sweep of a key, each into a sub-folder; or write "
+      "them as tasks for Slurm or GNU parallel (--emit) and summarise them when done (--gather)");
+  auto* batch_scenes = batch_cmd->add_option("scenes", batch_options.scenes, "Scene files (TOML)");
+  auto* batch_sweep = batch_cmd->add_option(
+      "--sweep", batch_options.sweep,
+      "One run per value: key=v1,v2,... (e.g. sample.simulated_count=1e3,1e4)");
+  auto* batch_out = batch_cmd->add_option("--out", batch_options.out_dir, "Parent output folder")
+                        ->capture_default_str();
+  auto* batch_set =
+      batch_cmd->add_option("--set", batch_options.overrides, "Override a key in every run");
+  auto* batch_jobs =
+      batch_cmd
+          ->add_option("-j,--jobs", batch_options.jobs,
+                       "Runs at once, each given its share of the cores (integrator.threads); "
+                       "with --emit parallel, parallel's --jobs (default: one per core)")
+          ->check(CLI::Range(1, 256))
+          ->capture_default_str();
+  auto* batch_seeds =
+      batch_cmd->add_option("--seeds", batch_options.seeds,
+                            "Runs per scene (and swept value) differing only in sample.seed, "
+                            "1 to 10000; from 2, summary_stats.csv: mean and 95 % interval");
+  auto* batch_seed0 =
+      batch_cmd->add_option("--seed0", batch_options.seed0,
+                            "The first seed of --seeds (default 1): seed0, seed0 + 1, ...");
+  auto* batch_overwrite =
+      batch_cmd->add_flag("--overwrite", batch_options.overwrite,
+                          "Replace the runs that the sub-folders hold (with --emit: each task "
+                          "replaces its folder's run instead of going on with it)");
   batch_cmd->add_flag("-q,--quiet", batch_options.quiet, "Print only warnings and errors");
+  auto* batch_emit =
+      batch_cmd
+          ->add_option("--emit", batch_options.scheduler,
+                       "Run nothing: write the runs into --out as tasks for a scheduler, each "
+                       "run's resolved scene beside them: slurm (a job array, sedem.sbatch and "
+                       "submit.sh) or parallel (GNU parallel's parallel.txt and parallel.sh)")
+          ->check(CLI::IsMember({"slurm", "parallel"}));
+  auto* batch_gather = batch_cmd->add_option(
+      "--gather", gather_dir,
+      "Summarise a batch written by --emit in this folder once its tasks have ended: "
+      "summary.csv, summary_stats.csv, figures, index.html; runs not complete are listed");
+  batch_cmd
+      ->add_option("--slurm-time", batch_options.slurm.time,
+                   "With --emit slurm: each task's time limit (minutes, HH:MM:SS, D-HH:MM:SS)")
+      ->capture_default_str()
+      ->needs(batch_emit);
+  batch_cmd
+      ->add_option("--slurm-mem", batch_options.slurm.mem,
+                   "With --emit slurm: each task's memory, e.g. 800M, 4G (default: the largest "
+                   "run's estimate with a margin)")
+      ->needs(batch_emit);
+  batch_cmd
+      ->add_option("--slurm-cpus", batch_options.slurm.cpus,
+                   "With --emit slurm: each task's CPUs, its run's integrator.threads")
+      ->capture_default_str()
+      ->needs(batch_emit);
+  batch_cmd
+      ->add_option("--slurm-partition", batch_options.slurm.partition,
+                   "With --emit slurm: the partition (default: the cluster's)")
+      ->needs(batch_emit);
+  batch_cmd
+      ->add_option("--slurm-account", batch_options.slurm.account,
+                   "With --emit slurm: the account charged (default: the user's)")
+      ->needs(batch_emit);
+  // A gathered batch is the one its plan says: nothing of the command line changes it.
+  for (auto* option : {batch_scenes, batch_sweep, batch_out, batch_set, batch_jobs, batch_seeds,
+                       batch_seed0, batch_overwrite, batch_emit})
+    batch_gather->excludes(option);
+  batch_cmd->callback([&] {
+    if (batch_options.scenes.empty() && gather_dir.empty())
+      throw CLI::RequiredError("scene files, or --gather DIR");
+    batch_options.jobs_given = batch_jobs->count() > 0;
+  });
 
   RenderOptions render_options;
   auto* render_cmd = cli.add_subcommand(
@@ -314,7 +369,9 @@ int main(int argc, char** argv) {
   QGuiApplication qt(argc, argv);
   try {
     if (run_cmd->parsed()) return run(run_options);
-    if (batch_cmd->parsed()) return batch(batch_options);
+    if (batch_cmd->parsed())
+      return gather_dir.empty() ? batch(batch_options)
+                                : gather_batch(gather_dir, batch_options.quiet);
     if (render_cmd->parsed()) return render_runs(render_options);
     if (paraview_cmd->parsed()) return paraview_state(paraview_options);
     if (reduce_cmd->parsed()) return reduce(reduce_options);

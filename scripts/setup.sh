@@ -40,6 +40,9 @@ $build_only || packages+=(
   libopengl0 libxcursor1  python3-mpi4py python3-six
   # Headless Chromium, in which the tests open a run's report.html.
   chromium
+  # `sedem batch --emit`: GNU parallel, and Slurm with munge for the single-node cluster the
+  # tests start (as root, from a folder of their own: no system service is set up).
+  parallel slurm-wlm munge
 )
 
 cd "$(dirname "$0")/.."
