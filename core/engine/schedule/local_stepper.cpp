@@ -180,6 +180,8 @@ void LocalStepper::step(double limit) {
     e_.lists.stale = e_.lists.stale || e_.lists.moved_beyond_margin(e_.state);
     for (std::size_t k = 0; k < e_.state.size(); ++k)
       if (!e_.state.frozen[k]) move_deposit(e_.state.origin[k], e_.state.x[k], e_.state.y[k]);
+  } else if (!moving) {
+    e_.stats.contacts = 0;  // no force pass this step: nothing was found touching
   }
   e_.stats.last_step = target - e_.time;
   e_.time = target;
