@@ -1,8 +1,6 @@
-"""The Python package against a real `sedem`: run through ctest (SEDEM_EXE names the build's
+"""The subprocess path against a real `sedem`: run through ctest (SEDEM_EXE names the build's
 program, SEDEM_TEST_OUTPUT where runs go)."""
 
-import os
-import re
 import shutil
 from pathlib import Path
 
@@ -10,12 +8,7 @@ import numpy as np
 import pytest
 
 import sedem
-
-ROOT = Path(__file__).resolve().parents[2]
-DEMO = str(ROOT / "scenes" / "demo.toml")
-OUT = Path(os.environ.get("SEDEM_TEST_OUTPUT", "/tmp")) / "python"
-SMALL = {"sample.simulated_count": 300, "output.frames": False, "run.end_time_s": 60,
-         "instruments.hydrometer.times_min": [0.25, 0.5, 1]}
+from conftest import DEMO, OUT, SMALL
 
 
 @pytest.fixture(scope="module")
@@ -119,18 +112,3 @@ def test_reduce(tmp_path):
     lab.write_text("time_min,reading_g_per_l,temperature_c\n2,40,20\n5,30,20\n")
     table = sedem.reduce(str(lab), mass_g=50, frame=False)
     np.testing.assert_allclose(table["percent_finer"], [80, 60])
-
-
-def test_the_worked_example_of_docs_python_md(tmp_path, monkeypatch):
-    """docs/python.md's example, as printed, draws Fig. 18 from a run."""
-    pytest.importorskip("matplotlib")
-    import matplotlib
-    matplotlib.use("Agg")
-    text = (ROOT / "docs" / "python.md").read_text()
-    blocks = re.findall(r"```python\n(.*?)```", text, re.S)
-    assert blocks, "docs/python.md has no python example"
-    monkeypatch.chdir(tmp_path)
-    os.symlink(ROOT / "scenes", tmp_path / "scenes")
-    example = blocks[0].replace('"sample.simulated_count": 1500', '"sample.simulated_count": 300')
-    exec(compile(example, "docs/python.md", "exec"), {})
-    assert (tmp_path / "fig18.png").stat().st_size > 10000
