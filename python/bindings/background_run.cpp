@@ -43,6 +43,8 @@ void BackgroundRun::body() {
   hooks.progress = [this](double t, double steps) {
     {
       std::lock_guard lock(mutex_);
+      // The run reports at every poll; the callback hears of a change only.
+      if (t == progress_.simulated_time && steps == progress_.particle_steps) return;
       progress_.simulated_time = t;
       progress_.particle_steps = steps;
       progress_.fresh = true;

@@ -65,10 +65,11 @@ def stack(parts):
     merged = {}
     for n, chunks in out.items():
         values = np.concatenate(chunks) if chunks else np.array([])
-        try:
-            values = values.astype(float) if values.dtype == object else values
-        except (TypeError, ValueError):
-            pass
+        if values.dtype == object:
+            # The constants' own type back (a seed stays an int, a folder a str).
+            values = np.array(values.tolist())
+            if values.dtype.kind == "U":
+                values = values.astype(object)
         merged[n] = values
     return frame(merged)
 

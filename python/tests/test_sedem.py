@@ -112,3 +112,42 @@ def test_reduce(tmp_path):
     lab.write_text("time_min,reading_g_per_l,temperature_c\n2,40,20\n5,30,20\n")
     table = sedem.reduce(str(lab), mass_g=50, frame=False)
     np.testing.assert_allclose(table["percent_finer"], [80, 60])
+
+
+CLAY_LOAM = """time_min,reading_g_per_l,temperature_c,composite_correction_g_per_l
+0.66,39,23,2
+2,33,23,2
+5,29,23,2
+15,23,23,2
+30,22,23,2
+60,20,23,2
+180,18,23,2
+"""
+
+
+def test_invert_returns_tables_in_micrometres(tmp_path):
+    """docs/invert.md's clay loam: the inverted curve at 15 min near its 42 %."""
+    pytest.importorskip("pandas")
+    lab = tmp_path / "clay_loam.csv"
+    lab.write_text(CLAY_LOAM)
+    out = sedem.invert(lab, test="hydrometer", out=tmp_path / "inv",
+                       options={"gs": 2.65, "mass-g": 50})
+    curve, fit = out["curve"], out["fit"]
+    assert {"diameter_um", "percent_finer", "percent_finer_low",
+            "percent_finer_high"} <= set(curve.columns)
+    assert "diameter_m" not in curve.columns
+    assert curve.diameter_um.between(0.01, 1e4).all()
+    assert len(fit) == 7 and "time_s" in fit.columns
+    assert out["record"] and (out["path"] / "invert.json").is_file()
+    at = np.interp(12.6, curve.diameter_um, curve.percent_finer)
+    assert at == pytest.approx(42, abs=3)
+
+
+def test_design_returns_its_readings(tmp_path):
+    pytest.importorskip("pandas")
+    out = sedem.design(DEMO, test="hydrometer", out=tmp_path / "design", readings=3,
+                       dem_count=0)
+    d = out["readings"]
+    assert {"schedule", "source", "time_min"} <= set(d.columns)
+    assert {"standard"} <= set(d.schedule)
+    assert out["record"]["test"] == "hydrometer"
