@@ -123,17 +123,19 @@ def reduce(readings, method="d7928", gs=2.65, mass_g=50.0, out=None, frame=True,
            volume_ml=1000.0):
     """`sedem reduce`: a laboratory's hydrometer readings (CSV with time_min,
     reading_g_per_l, temperature_c) to diameters and percent finer, ASTM D7928 or, with
-    method="d422", D422. Returns the table."""
+    method="d422", D422. Returns the table, one row per reading, diameters in µm
+    (diameter_um; the file `out`, when given, keeps sedem's diameter_m)."""
+    from .tables import with_units
     args = ["reduce", readings, "--method", method, "--gs", gs, "--mass-g", mass_g,
             "--volume-ml", volume_ml]
     if out is not None:
         _sedem(args + ["--out", out])
-        return read_csv(out, frame=frame)
+        return with_units(read_csv(out, frame=frame))
     done = _sedem(args)
     with tempfile.NamedTemporaryFile("w", suffix=".csv", delete=False) as f:
         f.write(done.stdout)
     try:
-        return read_csv(f.name, frame=frame)
+        return with_units(read_csv(f.name, frame=frame))
     finally:
         os.unlink(f.name)
 

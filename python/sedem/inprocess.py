@@ -97,7 +97,7 @@ class Simulation:
     scene      a scene file (str or Path), a dict of scene keys ({"sample": {"seed": 2}} or
                {"sample.seed": 2}; every other key its default), or None (every default)
     set        overrides, as `sedem run --set`: {"sample.simulated_count": 2000}
-    out        the run folder (as `sedem run --out`); None: a new temporary folder
+    out        the run folder (as `sedem run --out`); None: a new temporary folder (kept)
     overwrite  replace the run the folder holds
     resume     a stopped run's folder to go on with (instead of scene)
     particles  which particles to keep in memory: "last" (the last time the run stops at),

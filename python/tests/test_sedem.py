@@ -112,6 +112,9 @@ def test_reduce(tmp_path):
     lab.write_text("time_min,reading_g_per_l,temperature_c\n2,40,20\n5,30,20\n")
     table = sedem.reduce(str(lab), mass_g=50, frame=False)
     np.testing.assert_allclose(table["percent_finer"], [80, 60])
+    # D7928's diameter at 2 min, 20 °C, in µm (the program writes metres).
+    assert "diameter_m" not in table
+    np.testing.assert_allclose(table["diameter_um"][0], 30.086307934799644, rtol=1e-12)
 
 
 CLAY_LOAM = """time_min,reading_g_per_l,temperature_c,composite_correction_g_per_l
