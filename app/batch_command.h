@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "app/slurm_options.h"
+
 namespace sedem::app {
 
 struct BatchOptions {
@@ -20,6 +22,11 @@ struct BatchOptions {
   // with the scene's own seed.
   std::optional<int> seeds;
   std::optional<std::int64_t> seed0;  // default 1
+  // "slurm" or "parallel": write the runs as tasks for that scheduler instead of running them
+  // (app/batch_emit.h); "" runs them here.
+  std::string scheduler;
+  bool jobs_given = false;  // --jobs on the command line: with --emit parallel, parallel's -j
+  SlurmOptions slurm;
 };
 
 // One run per scene (and per sweep value), each in its own sub-folder of out_dir named after
@@ -45,8 +52,13 @@ struct BatchRun {
 
 // The runs of a batch, with their folders: the scene file's stem, "__key=value" with a sweep,
 // "__seed=K" with seeds, "_2", "_3"... when two scenes share a stem; every folder name is one
-// safe path component.
+// safe path component, and none is kBatchTasksFolder.
 std::vector<BatchRun> plan_batch(const BatchOptions& options);
+
+// The folder of a batch's out_dir that --emit writes its tasks' scenes and logs into: no run
+// takes its name (a scene tasks.toml runs into tasks_2/), emitted or not, so that a batch's
+// run folders are the same whether it runs here or on a cluster.
+inline constexpr const char* kBatchTasksFolder = "tasks";
 
 // Why the options' seeds cannot be run (one line naming the option, the value and the allowed
 // range), or "" when they can.

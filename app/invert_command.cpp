@@ -10,6 +10,9 @@
 #include <nlohmann/json.hpp>
 
 #include "app/exit_codes.h"
+#include "app/invert_lab_report.h"
+#include "app/lab_file.h"
+#include "app/lab_sieve_input.h"
 #include "app/progress.h"
 #include "app/run_record.h"
 #include "core/instruments/hydrometer.h"
@@ -17,12 +20,14 @@
 #include "core/lab/hydrometer_reduction.h"
 #include "core/lab/lab_csv.h"
 #include "core/lab/water.h"
+#include "core/lab/whole_curve.h"
 #include "core/model/shortened.h"
 #include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
 #include "core/scene/scene_loader.h"
 #include "render/atomic_write.h"
 #include "render/invert_figure.h"
+#include "render/lab_curve_figure.h"
 
 namespace sedem::app {
 
@@ -68,8 +73,9 @@ void check_flags(const InvertOptions& o) {
 }
 
 // The command's outputs in `dir`.
-const std::vector<std::string> kOutputs = {"inverted_curve.csv", "readings_fit.csv", "invert.json",
-                                           "invert.png", "invert.csv"};
+const std::vector<std::string> kOutputs = {
+    "inverted_curve.csv", "readings_fit.csv", "invert.json",       "invert.png",       "invert.csv",
+    "report.html",        "whole_curve.csv",  "grading_curve.png", "grading_curve.csv"};
 
 // A standard reduction's diameter that is no number or coarser than any grain a sedimentation
 // test sorts comes from a time that cannot be right: refused, naming the row.
@@ -163,10 +169,30 @@ int run_invert(const InvertOptions& o) {
   const std::string source =
       o.run.empty() ? o.readings
                     : (fs::path(o.run) / ("readings_" + test_name(test) + ".csv")).string();
-  std::ifstream in(source);
-  if (!in || fs::is_directory(source)) {
-    std::fprintf(stderr, "sedem: %s: cannot open the readings file\n", shortened(source).c_str());
-    return exit_code::invalid_scene;
+  // A laboratory's file in any form it keeps (CSV, ';', tabs, .xlsx); a run's own CSV.
+  LabTable table;
+  if (o.run.empty()) {
+    table = read_lab_file(source, o.lab.sheet);
+  } else {
+    std::ifstream in(source);
+    if (!in || fs::is_directory(source)) {
+      std::fprintf(stderr, "sedem: %s: cannot open the readings file\n", shortened(source).c_str());
+      return exit_code::invalid_scene;
+    }
+    table = read_lab_text(in);
+  }
+  // The sieve analysis is read before the inversion, which can take a while.
+  std::optional<SieveInput> sieve;
+  if (!o.lab.sieve.empty()) {
+    try {
+      sieve = read_sieve_input(o.lab.sieve, o.lab.sieve_sheet, o.lab.sieve_total_g,
+                               o.lab.separating_sieve_mm);
+    } catch (const std::invalid_argument& e) {
+      std::fprintf(stderr, "sedem: %s: %s\n", shortened(o.lab.sieve).c_str(), e.what());
+      return exit_code::invalid_scene;
+    }
+    for (const auto& w : sieve->warnings)
+      std::fprintf(stderr, "sedem: warning: %s: %s\n", shortened(o.lab.sieve).c_str(), w.c_str());
   }
   // The readings in the laboratory's units and, for the 152H, its standard reduction
   // (`reduce`'s: D7928 or D422).
@@ -177,13 +203,14 @@ int run_invert(const InvertOptions& o) {
                                         ? lab_method_name(method)
                                         : invert::reading_format(test).standard_name;
   Scene scene;
+  std::vector<LabReading> lab;  // the 152H's readings as the laboratory took them
   // A run's true curve: its sample's size classes, as the run drew them from its scene.
   std::vector<SizeClass> truth;
   if (!o.run.empty()) {
     scene = make_setup(o, 20.0);
     const auto& format = invert::reading_format(test);
     std::vector<double> times, raw;
-    for (const auto& row : read_numeric_csv(in, {"time_s", format.run_column})) {
+    for (const auto& row : lab_columns(table, {"time_s", format.run_column})) {
       times.push_back(row[0]);
       raw.push_back(format.run_to_lab * row[1]);
     }
@@ -193,7 +220,7 @@ int run_invert(const InvertOptions& o) {
     standard = std::move(recorded.standard);
     truth = plan_sample(sample_setup(scene)).classes;
   } else if (test == Test::hydrometer) {
-    const auto lab = read_lab_readings_csv(in);
+    lab = read_lab_readings(table);
     double mean_t = 20;
     if (!lab.empty()) {
       mean_t = 0;
@@ -222,7 +249,7 @@ int run_invert(const InvertOptions& o) {
       data.push_back(
           {r.time, r.reading - r.composite_correction, r.reading + r.meniscus_correction});
   } else {
-    data = invert::read_measurements_csv(in, test);
+    data = invert::read_measurements(table, test);
     scene = make_setup(o, o.temperature_c.value_or(20.0));
     invert::validate_measurements(test_setup(scene), test, data, {});
     standard = invert::standard_reduction(test_setup(scene), test, data);
@@ -246,8 +273,9 @@ int run_invert(const InvertOptions& o) {
       o.partial ? "partial: from a run that did not complete; its readings stop where it did" : "";
   write_atomically(dir / "inverted_curve.csv", [&](std::ostream& csv) {
     if (o.partial) csv << "# " << partial_note << '\n';
+    // The diameter in µm too, as laboratories write it.
     csv << "diameter_m,percent_finer,percent_finer_low,percent_finer_high,readings_allow_low,"
-           "readings_allow_high\n";
+           "readings_allow_high,diameter_um,readings_tell\n";
     for (std::size_t k = 0; k < curve.diameter.size(); ++k)
       csv << number(curve.diameter[k]) << ',' << number(curve.percent_finer[k]) << ','
           << (curve.lower.empty() ? "" : number(curve.lower[k])) << ','
@@ -255,19 +283,25 @@ int run_invert(const InvertOptions& o) {
           << (curve.bound_lower.empty() ? "" : number(curve.bound_lower_at(curve.diameter[k])))
           << ','
           << (curve.bound_upper.empty() ? "" : number(curve.bound_upper_at(curve.diameter[k])))
+          << ',' << number(curve.diameter[k] * 1e6) << ','
+          << (curve.open.empty() ? ""
+              : curve.open[k]    ? "0"
+                                 : "1")
           << '\n';
   });
   const std::string unit = test == Test::hydrometer ? "g_per_l" : "g";
   write_atomically(dir / "readings_fit.csv", [&](std::ostream& csv) {
     if (o.partial) csv << "# " << partial_note << '\n';
     csv << "time_s,measured_" << unit << ",fitted_" << unit << ",pinned_diameter_m,"
-        << "inverted_percent_finer,standard_diameter_m,standard_percent_finer"
+        << "inverted_percent_finer,standard_diameter_m,standard_percent_finer,"
+        << "time_min,pinned_diameter_um,standard_diameter_um"  // the lab's units beside SI
         << (truth.empty() ? "" : ",true_percent_finer") << '\n';
     for (std::size_t i = 0; i < data.size(); ++i) {
       csv << number(data[i].time) << ',' << number(curve.measured[i]) << ','
           << number(curve.fitted[i]) << ',' << number(curve.reading_diameter[i]) << ','
           << number(curve.at(curve.reading_diameter[i])) << ',' << number(standard[i].diameter)
-          << ',' << number(standard[i].percent_finer);
+          << ',' << number(standard[i].percent_finer) << ',' << number(data[i].time / 60.0) << ','
+          << number(curve.reading_diameter[i] * 1e6) << ',' << number(standard[i].diameter * 1e6);
       if (!truth.empty()) csv << ',' << number(true_percent_finer(truth, standard[i].diameter));
       csv << '\n';
     }
@@ -306,6 +340,12 @@ int run_invert(const InvertOptions& o) {
       j["readings_allow"] = {{"widest_pp", open.width},
                              {"at_diameter_m", open.diameter},
                              {"tolerance", curve.bound_tolerance}};
+    if (!curve.open.empty()) {
+      nlohmann::json ranges = nlohmann::json::array();
+      for (const auto& [from, to] : curve.open_ranges()) ranges.push_back({from, to});
+      j["readings_cannot_tell"] = {{"bounds_wider_than_pp", curve.open_width},
+                                   {"diameter_ranges_m", ranges}};
+    }
     if (!truth.empty())
       j["true_curve_error_pp"] = {{"inverted", inverted_error}, {"standard", standard_error}};
     write_atomically(dir / "invert.json", [&](std::ostream& f) { f << j.dump(2) << '\n'; });
@@ -323,6 +363,11 @@ int run_invert(const InvertOptions& o) {
   fig.bound_diameter_m = curve.bound_diameter;
   fig.bound_lower = curve.bound_lower;
   fig.bound_upper = curve.bound_upper;
+  for (std::size_t k = 0; k < curve.open.size(); ++k)
+    if (curve.open[k]) {
+      fig.open_diameter_m.push_back(curve.diameter[k]);
+      fig.open_percent_finer.push_back(curve.percent_finer[k]);
+    }
   fig.standard_name = standard_name;
   for (const auto& p : standard) {
     fig.standard_diameter_m.push_back(p.diameter);
@@ -333,6 +378,33 @@ int run_invert(const InvertOptions& o) {
     fig.true_percent_finer.push_back(p.percent_finer);
   }
   render::write_invert_figure(fig, dir / "invert");
+
+  // The whole curve: the sieves, the standard reduction and the inverted curve (within the
+  // diameters the readings resolve) scaled by the percent passing the separating sieve.
+  std::vector<CurvePoint> whole;
+  if (sieve) {
+    std::vector<SedimentationPoint> standard_points, inverted_points;
+    for (std::size_t i = 0; i < standard.size(); ++i)
+      standard_points.push_back({standard[i].diameter, standard[i].percent_finer, data[i].time});
+    for (std::size_t k = 0; k < curve.diameter.size(); ++k)
+      if (curve.diameter[k] >= curve.resolved_min * (1 - 1e-9) &&
+          curve.diameter[k] <= curve.resolved_max * (1 + 1e-9))
+        inverted_points.push_back({curve.diameter[k], curve.percent_finer[k], NAN});
+    whole = whole_curve(sieve->points, o.lab.separating_sieve_mm, test_name(test), standard_points);
+    add_to_whole_curve(whole, sieve->passing_separating, "inverted", inverted_points);
+    if (const std::string conflict = whole_curve_conflict(whole); !conflict.empty()) {
+      std::fprintf(stderr, "sedem: warning: %s\n", conflict.c_str());
+      sieve->warnings.push_back(conflict);
+    }
+    write_atomically(dir / "whole_curve.csv",
+                     [&](std::ostream& csv) { write_whole_curve_csv(csv, whole, partial_note); });
+    render::write_lab_curve_figure("Whole grading curve: sieves (ASTM D6913), " + standard_name +
+                                       " and the inversion" + (o.partial ? " (partial)" : ""),
+                                   whole, dir / "grading_curve");
+  }
+  write_invert_lab_report(
+      {o, test, standard_name, data, lab, standard, curve, sieve ? &*sieve : nullptr, whole},
+      dir / "report.html");
 
   if (!o.quiet) {
     std::printf("%-8s %-12s %-10s %-10s %-10s %-12s %-10s\n", "time_min", "measured", "fitted",
@@ -351,6 +423,12 @@ int run_invert(const InvertOptions& o) {
           "they resolve): there the curve is the smoothing's choice\n",
           curve.bound_lower_at(open.diameter), curve.bound_upper_at(open.diameter),
           open.diameter * 1e6);
+    for (const auto& [from, to] : curve.open_ranges())
+      std::printf(
+          "the readings cannot tell the curve from %.3g to %.3g um: they allow curves more than "
+          "%.0f pp apart there (%.1f to %.1f %% at %.3g um); the band there is what they allow\n",
+          from * 1e6, to * 1e6, curve.open_width, curve.bound_lower_at(from),
+          curve.bound_upper_at(to), to * 1e6);
     if (!truth.empty())
       std::printf(
           "against the run's true curve: inverted %.2f pp, %s %.2f pp (largest, at the "

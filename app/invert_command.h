@@ -3,6 +3,8 @@
 #include <optional>
 #include <string>
 
+#include "app/lab_input_options.h"
+
 namespace sedem::app {
 
 struct InvertOptions {
@@ -24,7 +26,9 @@ struct InvertOptions {
   std::optional<double> blank_g;           // the sphere's apparent mass in the clear liquid
   std::optional<double> pipette_ml;        // the pipette's volume; default 35 or the scene's
   std::string method = "d7928";            // the 152H's standard reduction: d7928 | d422
-  double resolution = 0;                   // 0: the test's default
+  // The readings' sheet and the sieve analysis: whole_curve.csv then holds the whole curve.
+  LabInputOptions lab;
+  double resolution = 0;  // 0: the test's default
   int refine = 2;
   int replicas = 200;
   double coverage = 0.9;

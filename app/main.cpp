@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/batch_command.h"
+#include "app/batch_gather.h"
 #include "app/bench_command.h"
 #include "app/design_command.h"
 #include "app/exit_codes.h"
@@ -36,6 +37,35 @@ std::string suggestion(const std::string& typed, const std::vector<std::string>&
     if (d < best_distance) best = name, best_distance = d;
   }
   return best.empty() ? "" : "; did you mean '" + best + "'?";
+}
+
+// The options `reduce` and `invert` share for a laboratory's files (docs/lab.md); `whole`
+// says what the sieve analysis makes of the output.
+void add_lab_input_options(CLI::App* command, sedem::app::LabInputOptions& lab,
+                           const std::string& whole) {
+  command->add_option("--sheet", lab.sheet,
+                      "The readings' sheet of an .xlsx workbook (default: the first)");
+  auto* sieve = command->add_option("--sieve", lab.sieve,
+                                    "The sample's sieve analysis (ASTM D6913): opening (mm) and "
+                                    "mass retained (g) per sieve, a pan and a total row; " +
+                                        whole);
+  // Without --sieve these would be ignored: refused instead.
+  command
+      ->add_option("--sieve-sheet", lab.sieve_sheet,
+                   "The sieve analysis' sheet of an .xlsx workbook (default: the first)")
+      ->needs(sieve);
+  command
+      ->add_option("--sieve-total-g", lab.sieve_total_g,
+                   "The sample's total dry mass, g (default: the sieve file's total row, or "
+                   "the sum of its sieves and pan)")
+      ->check(CLI::Range(1e-3, 1e6))
+      ->needs(sieve);
+  command
+      ->add_option("--separating-sieve-mm", lab.separating_sieve_mm,
+                   "The sieve the tested specimen passed, mm (No. 10: 2; No. 200: 0.075)")
+      ->check(CLI::Range(0.02, 100.0))
+      ->capture_default_str()
+      ->needs(sieve);
 }
 
 }  // namespace
@@ -69,27 +99,81 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("-q,--quiet", run_options.quiet, "Print only warnings and errors");
 
   BatchOptions batch_options;
+  std::string gather_dir;
   auto* batch_cmd = cli.add_subcommand(
-      "batch", "Run several scenes, or one scene over a sweep of a key, each into a sub-folder");
-  batch_cmd->add_option("scenes", batch_options.scenes, "Scene files (TOML)")->required();
-  batch_cmd->add_option("--sweep", batch_options.sweep,
-                        "One run per value: key=v1,v2,... (e.g. sample.simulated_count=1e3,1e4)");
-  batch_cmd->add_option("--out", batch_options.out_dir, "Parent output folder")
-      ->capture_default_str();
-  batch_cmd->add_option("--set", batch_options.overrides, "Override a key in every run");
-  batch_cmd
-      ->add_option("-j,--jobs", batch_options.jobs,
-                   "Runs at once, each given its share of the cores (integrator.threads)")
-      ->check(CLI::Range(1, 256))
-      ->capture_default_str();
-  batch_cmd->add_option("--seeds", batch_options.seeds,
-                        "Runs per scene (and swept value) differing only in sample.seed, "
-                        "1 to 10000; from 2, summary_stats.csv: mean and 95 % interval");
-  batch_cmd->add_option("--seed0", batch_options.seed0,
-                        "The first seed of --seeds (default 1): seed0, seed0 + 1, ...");
-  batch_cmd->add_flag("--overwrite", batch_options.overwrite,
-                      "Replace the runs that the sub-folders hold");
+      "batch",
+      "Run several scenes, or one scene over a sweep of a key, each into a sub-folder; or write "
+      "them as tasks for Slurm or GNU parallel (--emit) and summarise them when done (--gather)");
+  auto* batch_scenes = batch_cmd->add_option("scenes", batch_options.scenes, "Scene files (TOML)");
+  auto* batch_sweep = batch_cmd->add_option(
+      "--sweep", batch_options.sweep,
+      "One run per value: key=v1,v2,... (e.g. sample.simulated_count=1e3,1e4)");
+  auto* batch_out = batch_cmd->add_option("--out", batch_options.out_dir, "Parent output folder")
+                        ->capture_default_str();
+  auto* batch_set =
+      batch_cmd->add_option("--set", batch_options.overrides, "Override a key in every run");
+  auto* batch_jobs =
+      batch_cmd
+          ->add_option("-j,--jobs", batch_options.jobs,
+                       "Runs at once, each given its share of the cores (integrator.threads); "
+                       "with --emit parallel, parallel's --jobs (default: one per core)")
+          ->check(CLI::Range(1, 256))
+          ->capture_default_str();
+  auto* batch_seeds =
+      batch_cmd->add_option("--seeds", batch_options.seeds,
+                            "Runs per scene (and swept value) differing only in sample.seed, "
+                            "1 to 10000; from 2, summary_stats.csv: mean and 95 % interval");
+  auto* batch_seed0 =
+      batch_cmd->add_option("--seed0", batch_options.seed0,
+                            "The first seed of --seeds (default 1): seed0, seed0 + 1, ...");
+  auto* batch_overwrite =
+      batch_cmd->add_flag("--overwrite", batch_options.overwrite,
+                          "Replace the runs that the sub-folders hold (with --emit: each task "
+                          "replaces its folder's run instead of going on with it)");
   batch_cmd->add_flag("-q,--quiet", batch_options.quiet, "Print only warnings and errors");
+  auto* batch_emit =
+      batch_cmd
+          ->add_option("--emit", batch_options.scheduler,
+                       "Run nothing: write the runs into --out as tasks for a scheduler, each "
+                       "run's resolved scene beside them: slurm (a job array, sedem.sbatch and "
+                       "submit.sh) or parallel (GNU parallel's parallel.txt and parallel.sh)")
+          ->check(CLI::IsMember({"slurm", "parallel"}));
+  auto* batch_gather = batch_cmd->add_option(
+      "--gather", gather_dir,
+      "Summarise a batch written by --emit in this folder once its tasks have ended: "
+      "summary.csv, summary_stats.csv, figures, index.html; runs not complete are listed");
+  batch_cmd
+      ->add_option("--slurm-time", batch_options.slurm.time,
+                   "With --emit slurm: each task's time limit (minutes, HH:MM:SS, D-HH:MM:SS)")
+      ->capture_default_str()
+      ->needs(batch_emit);
+  batch_cmd
+      ->add_option("--slurm-mem", batch_options.slurm.mem,
+                   "With --emit slurm: each task's memory, e.g. 800M, 4G (default: the largest "
+                   "run's estimate with a margin)")
+      ->needs(batch_emit);
+  batch_cmd
+      ->add_option("--slurm-cpus", batch_options.slurm.cpus,
+                   "With --emit slurm: each task's CPUs, its run's integrator.threads")
+      ->capture_default_str()
+      ->needs(batch_emit);
+  batch_cmd
+      ->add_option("--slurm-partition", batch_options.slurm.partition,
+                   "With --emit slurm: the partition (default: the cluster's)")
+      ->needs(batch_emit);
+  batch_cmd
+      ->add_option("--slurm-account", batch_options.slurm.account,
+                   "With --emit slurm: the account charged (default: the user's)")
+      ->needs(batch_emit);
+  // A gathered batch is the one its plan says: nothing of the command line changes it.
+  for (auto* option : {batch_scenes, batch_sweep, batch_out, batch_set, batch_jobs, batch_seeds,
+                       batch_seed0, batch_overwrite, batch_emit})
+    batch_gather->excludes(option);
+  batch_cmd->callback([&] {
+    if (batch_options.scenes.empty() && gather_dir.empty())
+      throw CLI::RequiredError("scene files, or --gather DIR");
+    batch_options.jobs_given = batch_jobs->count() > 0;
+  });
 
   RenderOptions render_options;
   auto* render_cmd = cli.add_subcommand(
@@ -128,9 +212,14 @@ int main(int argc, char** argv) {
       "Reduce laboratory hydrometer readings (152H) to a grading curve, ASTM D7928 or D422");
   reduce_cmd
       ->add_option("readings", reduce_options.readings,
-                   "CSV with columns time_min, reading_g_per_l, temperature_c and optionally "
-                   "composite_correction_g_per_l, meniscus_correction_g_per_l")
+                   "CSV (',' or ';' with decimal commas), tab-separated text or .xlsx with "
+                   "columns time_min, reading_g_per_l, temperature_c and optionally "
+                   "composite_correction_g_per_l, meniscus_correction_g_per_l, or the same in "
+                   "the lab's words and units: time (min), R (g/L), T (°C), ...")
       ->required();
+  add_lab_input_options(reduce_cmd, reduce_options.lab, "the output is then the whole curve");
+  reduce_cmd->add_option("--report", reduce_options.report,
+                         "Write a one-page lab report (HTML) and its figure beside it");
   reduce_cmd->add_option("--out", reduce_options.out, "Output CSV (default: standard output)");
   reduce_cmd
       ->add_option("--method", reduce_options.method,
@@ -154,8 +243,11 @@ int main(int argc, char** argv) {
       "reproduces them, with an uncertainty band, beside the standard reduction");
   auto* invert_readings = invert_cmd->add_option(
       "readings", invert_options.readings,
-      "CSV: hydrometer as for reduce; buoyancy time_min, apparent_mass_g; pipette "
-      "time_min, dry_mass_g");
+      "CSV, tab-separated text or .xlsx: hydrometer as for reduce; buoyancy time_min, "
+      "apparent_mass_g; pipette time_min, dry_mass_g (or in the lab's words and units: "
+      "time (s), apparent mass (g), dry mass (mg), ...)");
+  add_lab_input_options(invert_cmd, invert_options.lab,
+                        "whole_curve.csv then holds the whole grading curve");
   auto* invert_run =
       invert_cmd
           ->add_option("--run", invert_options.run,
@@ -277,7 +369,9 @@ int main(int argc, char** argv) {
   QGuiApplication qt(argc, argv);
   try {
     if (run_cmd->parsed()) return run(run_options);
-    if (batch_cmd->parsed()) return batch(batch_options);
+    if (batch_cmd->parsed())
+      return gather_dir.empty() ? batch(batch_options)
+                                : gather_batch(gather_dir, batch_options.quiet);
     if (render_cmd->parsed()) return render_runs(render_options);
     if (paraview_cmd->parsed()) return paraview_state(paraview_options);
     if (reduce_cmd->parsed()) return reduce(reduce_options);

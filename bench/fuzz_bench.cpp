@@ -1,10 +1,10 @@
 // Hostile input against `sedem`: seeded mutations of the shipped scenes, of --set values, of
-// laboratory CSVs for `sedem reduce` and `sedem invert` (random rows, NaN, inf, huge and tiny
-// values, CR/LF mixes, empty and header-only files), of a run folder for `sedem render` (a
-// .vtp, particles.pvd or run.json cut short or changed) and of a checkpoint for
-// `sedem run --resume`. Every case must end in exit 2 naming what is wrong, or in a run (or
-// reduction, inversion, redrawing) whose outputs hold no NaN or inf; never a crash, a hang or
-// another exit code. The test suite runs a few cases of each kind (seconds); run it longer with
+// laboratory CSVs for `sedem reduce` and `sedem invert` and sieve analyses (random rows, NaN, inf,
+// huge and tiny values, CR/LF mixes, empty and header-only files), of a run folder for `sedem
+// render` (a .vtp, particles.pvd or run.json cut short or changed) and of a checkpoint for `sedem
+// run --resume`. Every case must end in exit 2 naming what is wrong, or in a run (or reduction,
+// inversion, redrawing) whose outputs hold no NaN or inf; never a crash, a hang or another exit
+// code. The test suite runs a few cases of each kind (seconds); run it longer with
 //   build/bench/sedem_bench_fuzz --cases 2000 --seed 7
 // Prints the counts and exits 1 if any case failed.
 #include <sys/wait.h>
@@ -384,6 +384,33 @@ int main(int argc, char** argv) {
                              (result / "points.csv").string(),
                          timeout);
     check_run(t, "reduce " + file.string() + " --mass-g " + mass, o, result, "");
+  }
+
+  // 3b. A sieve analysis for `sedem reduce --sieve`, damaged, beside the readings in the
+  // lab's words with ';' and decimal commas, as a spreadsheet in a comma locale saves them.
+  const std::string sieves =
+      "opening (mm),mass retained (g)\n9.5,0\n4.75,12\n2,18\n0.425,30\n0.075,40\npan,100\n"
+      "total,200\n";
+  const fs::path semicolons = scratch / "lab_semicolons.csv";
+  {
+    std::ofstream out(semicolons, std::ios::binary);
+    out << "time (min);R (g/L);T (\xC2\xB0"
+           "C);C (g/L)\n2;42;22,0;5\n5;35;22;5\n15;28;22;5\n60;18;21,5;5\n1440;7;19;5\n";
+  }
+  for (int i = 0; i < cases; ++i) {
+    const fs::path file = scratch / ("sieve_" + std::to_string(i) + ".csv");
+    {
+      std::ofstream out(file, std::ios::binary);
+      out << mutate_lab(sieves, rng);
+    }
+    const fs::path result = scratch / "whole";
+    fs::remove_all(result);
+    fs::create_directories(result);
+    const auto o = shell(sedem + " reduce " + semicolons.string() + " --sieve " + file.string() +
+                             " --out " + (result / "whole.csv").string() + " --report " +
+                             (result / "report.html").string(),
+                         timeout);
+    check_run(t, "reduce --sieve " + file.string(), o, result, "");
   }
 
   // 4. Laboratory CSVs for `sedem invert`, each test's form.

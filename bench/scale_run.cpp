@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "bench/bench_support.h"
+#include "core/model/engine_stats.h"
 #include "core/run/simulation.h"
 #include "core/run/stage_setups.h"
 #include "core/sample/sample_builder.h"
@@ -56,10 +57,60 @@ std::string format_count(double n) {
   return s;
 }
 
+// Watches every engine step of a run: wall time, steps, and the sums of members and contacts,
+// closing a span at the first step that reaches its time.
+class SpanTally {
+ public:
+  SpanTally() : start_(std::chrono::steady_clock::now()) {
+    for (const double t : kScaleSpanEnds) spans_.push_back({t});
+  }
+
+  void after_step(double time, const EngineStats& stats) {
+    ++steps_;
+    members_ += double(stats.members);
+    contacts_ += double(stats.contacts);
+    while (next_ < spans_.size() && time >= spans_[next_].until_s) close(spans_[next_++], true);
+  }
+
+  // The spans, the last the whole run to `end_s` in `wall_s` (the run's own measure); those
+  // the run did not reach stop at its end.
+  std::vector<ScaleSpan> finish(double end_s, double wall_s) {
+    for (; next_ < spans_.size(); ++next_) close(spans_[next_], false);
+    spans_.push_back({end_s});
+    close(spans_.back(), true);
+    spans_.back().wall_s = wall_s;
+    return spans_;
+  }
+
+ private:
+  void close(ScaleSpan& span, bool reached) const {
+    span.reached = reached;
+    span.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    span.steps = steps_;
+    span.members = steps_ > 0 ? members_ / double(steps_) : 0;
+    span.contacts = steps_ > 0 ? contacts_ / double(steps_) : 0;
+  }
+
+  std::chrono::steady_clock::time_point start_;
+  std::vector<ScaleSpan> spans_;
+  std::size_t next_ = 0;
+  std::int64_t steps_ = 0;
+  double members_ = 0, contacts_ = 0;
+};
+
+// A span's wall time for the table: "-" where the run did not get that far.
+std::string span_wall(const ScaleRow& r, std::size_t k) {
+  if (k >= r.spans.size() || !r.spans[k].reached) return "-";
+  char s[32];
+  std::snprintf(s, sizeof s, "%.1f", r.spans[k].wall_s);
+  return s;
+}
+
 void print_header(std::FILE* table) {
-  std::fprintf(table, "%-10s %-10s %9s %9s %10s %11s %9s %10s %8s %8s %8s %8s %10s\n", "label",
-               "sample", "particles", "wall_s", "steps", "p-steps/s", "sim_s", "merit", "eng_B/p",
-               "rss_MB", "hyd_pp", "sph_pp", "pip_pp");
+  std::fprintf(
+      table, "%-10s %-10s %9s %9s %8s %8s %10s %11s %9s %10s %8s %8s %8s %8s %10s %9s %9s\n",
+      "label", "sample", "particles", "wall_s", "to60_s", "to600_s", "steps", "p-steps/s", "sim_s",
+      "merit", "eng_B/p", "rss_MB", "hyd_pp", "sph_pp", "pip_pp", "members", "contacts");
   std::fflush(table);
 }
 
@@ -68,12 +119,18 @@ void print_row(std::FILE* table, const ScaleRow& r) {
     std::fprintf(table, "%-10s %-10s %9s failed: %s\n", r.label.c_str(), r.sample.c_str(),
                  format_count(r.requested).c_str(), r.message.c_str());
   } else {
+    // Members and contacts: means per step over the whole run.
+    const ScaleSpan whole = r.spans.empty() ? ScaleSpan{} : r.spans.back();
     std::fprintf(
-        table, "%-10s %-10s %9zu %9.1f %10lld %11.3g %9.0f %10.3g %8.0f %8.1f %8.3f %8.3f %10.3f\n",
-        r.label.c_str(), r.sample.c_str(), r.particles, r.wall_s, static_cast<long long>(r.steps),
+        table,
+        "%-10s %-10s %9zu %9.1f %8s %8s %10lld %11.3g %9.0f %10.3g %8.0f %8.1f %8.3f %8.3f "
+        "%10.3f %9.1f %9.1f\n",
+        r.label.c_str(), r.sample.c_str(), r.particles, r.wall_s, span_wall(r, 0).c_str(),
+        span_wall(r, 1).c_str(), static_cast<long long>(r.steps),
         r.particle_steps / std::max(r.wall_s, 1e-9), r.simulated_s, r.merit(),
         double(r.engine_peak_bytes) / double(std::max<std::size_t>(r.particles, 1)),
-        double(r.rss_peak_bytes) / 1e6, r.error_hydrometer, r.error_buoyancy, r.error_pipette);
+        double(r.rss_peak_bytes) / 1e6, r.error_hydrometer, r.error_buoyancy, r.error_pipette,
+        whole.members, whole.contacts);
   }
   std::fflush(table);
 }
@@ -128,7 +185,11 @@ std::vector<ScaleRow> run_scale_bench(const ScaleOptions& options, std::FILE* ta
         Sample sample = build_sample(sample_setup(scene));
         r.sample_build_s =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        const SimulationRun run = simulate(scene, std::move(sample));
+        SpanTally tally;
+        const SimulationRun run =
+            simulate(scene, std::move(sample), false,
+                     [&](double t, const EngineStats& stats) { tally.after_step(t, stats); });
+        r.spans = tally.finish(run.simulated_seconds, run.wall_seconds);
         r.wall_s = run.wall_seconds;
         r.particles = run.particles;
         r.threads = run.threads;
@@ -163,7 +224,15 @@ void write_scale_csv(const std::vector<ScaleRow>& rows, const fs::path& file) {
          "bytes,"
          "engine_bytes_per_particle,process_rss_start_bytes,process_peak_rss_bytes,"
          "process_peak_rss_per_run,error_hydrometer_pp,error_buoyancy_pp,error_pipette_pp,"
-         "merit_particle_s_per_wall_s,sets,message\n";
+         "merit_particle_s_per_wall_s,sets,message";
+  // Where the time went, to 60 s, to 600 s and to the end: after the older columns, so that
+  // rows of a build without them line up (scripts/compare_engines.sh).
+  for (const double until : kScaleSpanEnds) {
+    const std::string name = format_count(until);
+    out << ",wall_to_" << name << "_s,steps_to_" << name << ",members_per_step_to_" << name
+        << ",contacts_per_step_to_" << name;
+  }
+  out << ",members_per_step,contacts_per_step\n";
   for (const auto& r : rows) {
     const double n = double(std::max<std::size_t>(r.particles, 1));
     out << field(r.label) << ',' << field(r.sample) << ',' << r.status << ','
@@ -174,7 +243,19 @@ void write_scale_csv(const std::vector<ScaleRow>& rows, const fs::path& file) {
         << r.engine_peak_bytes << ',' << double(r.engine_peak_bytes) / n << ',' << r.rss_start_bytes
         << ',' << r.rss_peak_bytes << ',' << (r.rss_peak_per_run ? 1 : 0) << ','
         << r.error_hydrometer << ',' << r.error_buoyancy << ',' << r.error_pipette << ','
-        << r.merit() << ',' << field(r.sets) << ',' << field(r.message) << '\n';
+        << r.merit() << ',' << field(r.sets) << ',' << field(r.message);
+    // A span the run did not reach (or a failed run) leaves its cells empty.
+    for (std::size_t k = 0; k < std::size(kScaleSpanEnds); ++k) {
+      if (k + 1 < r.spans.size() && r.spans[k].reached)
+        out << ',' << r.spans[k].wall_s << ',' << r.spans[k].steps << ',' << r.spans[k].members
+            << ',' << r.spans[k].contacts;
+      else
+        out << ",,,,";
+    }
+    if (r.spans.empty())
+      out << ",,\n";
+    else
+      out << ',' << r.spans.back().members << ',' << r.spans.back().contacts << '\n';
   }
   if (!out.flush()) throw std::runtime_error("cannot write " + file.string());
 }

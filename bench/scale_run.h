@@ -24,6 +24,21 @@ struct ScaleOptions {
   bool plot = true;  // bench_scale_plot.png (wall time and error against count)
 };
 
+// Where a run's time went up to one simulated time: the first minutes, while coarse grains
+// fall through fine ones, cost most of a whole test with contacts everywhere.
+struct ScaleSpan {
+  double until_s = 0;      // simulated time the span ends at (the run's start is its start)
+  bool reached = false;    // the run got that far (false: the values stop where the run did)
+  double wall_s = 0;       // wall time to the engine's first step at or past until_s
+  std::int64_t steps = 0;  // engine steps in the span
+  // Means over those steps of the grains on the common step (frozen ones included) and of the
+  // particles touching something, as the engine's stats give them after each step.
+  double members = 0, contacts = 0;
+};
+
+// The spans the benchmark reports: to 60 s, to 600 s and to the end.
+inline constexpr double kScaleSpanEnds[] = {60, 600};
+
 struct ScaleRow {
   std::string label, sample, status = "ok", message;
   std::string sets;           // the options' keys, space-separated
@@ -42,6 +57,8 @@ struct ScaleRow {
   std::size_t rss_peak_bytes = 0;     // the process's peak resident memory (VmHWM)
   bool rss_peak_per_run = false;      // VmHWM reset before the run (else: since process start)
   double error_hydrometer = 0, error_buoyancy = 0, error_pipette = 0;  // pp; NaN: no reading
+  // To 60 s, to 600 s, and to the end (the whole run).
+  std::vector<ScaleSpan> spans;
 
   // Particles x simulated seconds per wall second.
   double merit() const;

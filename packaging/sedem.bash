@@ -19,24 +19,32 @@ _sedem() {
   local opts
   case $command in
     run) opts="--resume --out --overwrite --set --quiet -q --help -h" ;;
-    batch) opts="--sweep --seeds --seed0 --out --set --jobs -j --overwrite --quiet -q --help -h" ;;
+    batch) opts="--sweep --seeds --seed0 --out --set --jobs -j --overwrite --quiet -q --emit --gather
+      --slurm-time --slurm-mem --slurm-cpus --slurm-partition --slurm-account --help -h" ;;
     render) opts="--out --partial --quiet -q --help -h" ;;
     paraview) opts="--pvpython --time --screenshot --quiet -q --help -h" ;;
-    reduce) opts="--out --method --gs --mass-g --volume-ml --help -h" ;;
+    reduce) opts="--out --method --gs --mass-g --volume-ml --sheet --sieve --sieve-sheet
+      --sieve-total-g --separating-sieve-mm --report --help -h" ;;
     invert) opts="--run --partial --test --scene --out --method --gs --mass-g --volume-ml --area-cm2
+      --sheet --sieve --sieve-sheet --sieve-total-g --separating-sieve-mm
       --depth-cm --temperature-c --liquid-density --blank-g --pipette-ml --resolution --refine
       --replicas --coverage --seed --quiet -q --help -h" ;;
     design) opts="--test --readings --out --set --dem-count --sizes --quiet -q --help -h" ;;
     bench) opts="--help -h" ;;
   esac
   case $prev in
-    --out|--resume) COMPREPLY=($(compgen -d -- "$cur")); return ;;
+    --out|--resume|--gather) COMPREPLY=($(compgen -d -- "$cur")); return ;;
+    --emit) COMPREPLY=($(compgen -W "slurm parallel" -- "$cur")); return ;;
     --method) COMPREPLY=($(compgen -W "d7928 d422" -- "$cur")); return ;;
     --test) COMPREPLY=($(compgen -W "hydrometer buoyancy pipette" -- "$cur")); return ;;
     --run) COMPREPLY=($(compgen -d -- "$cur")); return ;;
     --scene) COMPREPLY=($(compgen -f -X '!*.toml' -- "$cur") $(compgen -d -- "$cur")); return ;;
     --pvpython|--screenshot) COMPREPLY=($(compgen -f -- "$cur")); return ;;
+    --sieve) COMPREPLY=($(compgen -f -- "$cur")); return ;;
+    --report) COMPREPLY=($(compgen -f -X '!*.html' -- "$cur") $(compgen -d -- "$cur")); return ;;
     --set|--time|--sweep|--seeds|--seed0|--gs|--mass-g|--jobs|-j|--readings|--dem-count|--sizes) return ;;
+    --sheet|--sieve-sheet|--sieve-total-g|--separating-sieve-mm) return ;;
+    --slurm-time|--slurm-mem|--slurm-cpus|--slurm-partition|--slurm-account) return ;;
   esac
   if [[ $cur == -* ]]; then
     COMPREPLY=($(compgen -W "$opts" -- "$cur"))
@@ -45,8 +53,8 @@ _sedem() {
   case $command in
     run|batch|design) COMPREPLY=($(compgen -f -X '!*.toml' -- "$cur") $(compgen -d -- "$cur")) ;;
     render|paraview) COMPREPLY=($(compgen -d -- "$cur")) ;;
-    reduce|invert) COMPREPLY=($(compgen -f -X '!*.csv' -- "$cur") $(compgen -d -- "$cur")) ;;
-    bench) COMPREPLY=($(compgen -W "engine accuracy speedup" -- "$cur")) ;;
+    reduce|invert) COMPREPLY=($(compgen -f -- "$cur")) ;;
+    bench) COMPREPLY=($(compgen -W "engine accuracy speedup scale" -- "$cur")) ;;
   esac
 }
 complete -o filenames -F _sedem sedem

@@ -57,6 +57,12 @@ Figure invert_figure(const InvertFigureInput& in) {
     plot.series.push_back(std::move(low));
     plot.series.push_back(std::move(high));
   }
+  if (!in.open_diameter_m.empty()) {
+    PlotSeries open("readings cannot tell", micrometres(in.open_diameter_m), in.open_percent_finer,
+                    SeriesStyle::points);
+    open.color = std::array<unsigned char, 3>{150, 150, 150};
+    plot.series.push_back(std::move(open));
+  }
   PlotSeries standard(in.standard_name, micrometres(in.standard_diameter_m),
                       in.standard_percent_finer, SeriesStyle::points);
   standard.color = standard_color;

@@ -17,6 +17,8 @@ struct InvertFigureInput {
   std::string band_name = "band";  // e.g. "90 % band"
   // What the readings alone allow (InvertedCurve::bound_*); empty: none.
   std::vector<double> bound_diameter_m, bound_lower, bound_upper;
+  // Nodes where the readings cannot tell the curve (InvertedCurve::open), marked apart.
+  std::vector<double> open_diameter_m, open_percent_finer;
   std::string standard_name;  // e.g. "ASTM D422"
   std::vector<double> standard_diameter_m, standard_percent_finer;
   std::vector<double> true_diameter_m, true_percent_finer;  // empty: unknown

@@ -53,6 +53,18 @@ bool ends_whole(const std::filesystem::path& file) {
          end.compare(end.size() - close.size(), close.size(), close) == 0;
 }
 
+// Whether the file's XML head names a DataArray `name`: VTK drops an array whose compressed
+// data does not inflate, with no error, so a missing array that the head declares is damage.
+bool declares_array(const std::filesystem::path& file, const char* name) {
+  std::ifstream in(file, std::ios::binary);
+  std::string head(1 << 16, '\0');
+  in.read(head.data(), std::streamsize(head.size()));
+  head.resize(std::size_t(in.gcount()));
+  const auto appended = head.find("<AppendedData");
+  if (appended != std::string::npos) head.resize(appended);
+  return head.find(std::string("Name=\"") + name + "\"") != std::string::npos;
+}
+
 }  // namespace
 
 std::vector<std::pair<double, std::string>> read_pvd(const std::filesystem::path& pvd) {
@@ -111,6 +123,9 @@ Snapshot read_particles_vtp(const std::filesystem::path& file) {
   const vtkIdType points = poly->GetNumberOfPoints();
   auto array = [&](const char* name) {
     vtkDataArray* a = pd->GetArray(name);
+    if (!a && declares_array(file, name))
+      damaged(file, std::string("point array '") + name +
+                        "' is declared but its data does not read back (corrupted)");
     if (!a) damaged(file, std::string("no point array '") + name + "'");
     if (a->GetNumberOfTuples() != points)
       damaged(file, std::string("point array '") + name + "' is cut short");

@@ -106,16 +106,27 @@ echo "compare_engines.sh: building sedem_bench_scale in $root/build" >&2
 cmake --build build --target sedem_bench_scale --parallel "$jobs"
 new_bench="$root/build/bench/sedem_bench_scale"
 
-header=""
-# Appends a run's bench_scale.csv to the comparison's CSV (its header once).
+parts=()
+# Rewrites the comparison's CSV from every run's bench_scale.csv so far: under the header with
+# the most columns, the rows of a build with fewer (an older one: new columns come last)
+# padded with empty cells. Rewritten after each run, so an interrupted comparison keeps what
+# it measured.
 append_csv() {
   local file="$1"
   [ -f "$file" ] || return 0
-  if [ -z "$header" ]; then
-    header="$(head -n 1 "$file")"
-    echo "$header" >"$csv"
-  fi
-  tail -n +2 "$file" >>"$csv"
+  parts+=("$file")
+  /usr/bin/python3 - "$csv" "${parts[@]}" <<'PY'
+import csv, sys
+out, files = sys.argv[1], sys.argv[2:]
+tables = [list(csv.reader(open(f, newline=""))) for f in files]
+header = max((t[0] for t in tables if t), key=len)
+with open(out, "w", newline="") as f:
+    w = csv.writer(f, lineterminator="\n")
+    w.writerow(header)
+    for t in tables:
+        for row in t[1:]:
+            w.writerow(row + [""] * (len(header) - len(row)))
+PY
 }
 
 # One case on the old `sedem run`, written as a bench_scale.csv row.

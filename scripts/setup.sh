@@ -20,6 +20,8 @@ build_only=false
 packages=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev coinor-libclp-dev
+  # .xlsx workbooks of laboratory readings are zip archives.
+  libzip-dev
   libvtk9-dev qt6-base-dev libcairo2-dev fonts-dejavu-core
   libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev libglew-dev
   libgtest-dev googletest clang-format
@@ -31,6 +33,8 @@ $build_only || packages+=(
   # The Python package's tables and its install into a virtual environment with no index
   # (pip install --no-build-isolation ./python: the build backend and wheel from Debian).
   python3-pandas python3-xarray python3-venv python3-pip python3-setuptools python3-wheel
+  # The lab-file tests write their .xlsx workbooks with openpyxl.
+  python3-openpyxl
   # The figure tests render every SVG and PDF the way readers open them.
   librsvg2-bin poppler-utils
   # ParaView's pvpython (unpacked below): its libraries' dependencies, and an X server for
@@ -41,6 +45,9 @@ $build_only || packages+=(
   libopengl0 libxcursor1  python3-mpi4py python3-six
   # Headless Chromium, in which the tests open a run's report.html.
   chromium
+  # `sedem batch --emit`: GNU parallel, and Slurm with munge for the single-node cluster the
+  # tests start (as root, from a folder of their own: no system service is set up).
+  parallel slurm-wlm munge
 )
 
 cd "$(dirname "$0")/.."

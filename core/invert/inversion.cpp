@@ -230,6 +230,26 @@ InvertedCurve::OpenInterval InvertedCurve::widest_open() const {
   return w;
 }
 
+bool InvertedCurve::open_at(double d) const {
+  return !bound_lower.empty() && bound_upper_at(d) - bound_lower_at(d) > open_width;
+}
+
+std::vector<std::pair<double, double>> InvertedCurve::open_ranges() const {
+  std::vector<std::pair<double, double>> ranges;
+  bool in_run = false;
+  for (std::size_t k = 0; k < open.size(); ++k) {
+    const double d = diameter[k];
+    const bool counted =
+        open[k] && d >= resolved_min * (1 - 1e-9) && d <= resolved_max * (1 + 1e-9);
+    if (counted && in_run)
+      ranges.back().second = d;
+    else if (counted)
+      ranges.emplace_back(d, d);
+    in_run = counted;
+  }
+  return ranges;
+}
+
 InvalidInversionInput::InvalidInversionInput(std::size_t row, const std::string& field,
                                              double value, const std::string& why)
     : std::invalid_argument(describe(row, field, value, why)), row_(row) {}
@@ -467,8 +487,23 @@ InvertedCurve invert_readings(const TestSetup& setup, Test test,
     // The smoothing's bias, which the replicas (all at the chosen lambda) cannot show: how far
     // the curve moves when the data are fitted with hardly any smoothing.
     const auto rough = curve_of(problem.solve(measured, 1e-6 * out.lambda, x));
+    // The grid's coarseness, which every replica shares: the same readings fitted on a grid
+    // twice as fine (its own lambda), read at this grid's nodes. Between two nodes the curve is
+    // linear in log d, and a knee inside an interval bends the fit at the nodes around it
+    // (the pipette's band missed the truth at 2 readings in 3 on curves with knees without it).
+    std::vector<double> coarse(curves.size(), 0.0);
+    if (options.grid_bias) {
+      InversionOptions finer = options;
+      finer.refine = std::min(2 * options.refine + 1, kMaxRefine);
+      finer.bootstrap = 0;
+      finer.bounds = false;
+      finer.progress = nullptr;
+      const InvertedCurve fine = invert_readings(setup, test, data, finer);
+      for (std::size_t k = 0; k < coarse.size(); ++k)
+        coarse[k] = std::abs(fine.at(out.diameter[k]) - out.percent_finer[k]);
+    }
     for (std::size_t k = 0; k < curves.size(); ++k) {
-      const double bias = std::abs(rough[k] - out.percent_finer[k]);
+      const double bias = std::abs(rough[k] - out.percent_finer[k]) + coarse[k];
       out.lower.push_back(std::max(0.0, quantile(curves[k], tail) - bias));
       out.upper.push_back(std::min(100.0, quantile(curves[k], 1.0 - tail) + bias));
     }
@@ -478,6 +513,19 @@ InvertedCurve invert_readings(const TestSetup& setup, Test test,
       out.lower[k - 1] = std::min(out.lower[k - 1], out.lower[k]);
     for (std::size_t k = 1; k < out.upper.size(); ++k)
       out.upper[k] = std::max(out.upper[k], out.upper[k - 1]);
+  }
+  // Where the readings cannot tell the curve, the smoothness prior alone narrows the band, and
+  // at a knee it is wrong: the band is then what the readings allow. Both edges stay monotone
+  // (each is the pointwise min or max of two monotone sequences).
+  out.open_width = options.open_width;
+  if (!out.bound_lower.empty()) {
+    for (std::size_t k = 0; k < out.diameter.size(); ++k) {
+      const double d = out.diameter[k];
+      out.open.push_back(out.open_at(d) ? 1 : 0);
+      if (!out.open.back() || out.lower.empty()) continue;
+      out.lower[k] = std::min(out.lower[k], out.bound_lower_at(d));
+      out.upper[k] = std::max(out.upper[k], out.bound_upper_at(d));
+    }
   }
   return out;
 }

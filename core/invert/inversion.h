@@ -4,6 +4,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/invert/forward_model.h"
@@ -35,6 +36,12 @@ struct InversionOptions {
   // stage done (0-1). May throw to end the inversion.
   std::function<void(const char* stage, double fraction)> progress;
   int bound_split = 4;  // the bounds' grid: each interval of the fit's cut in this many
+  // The band also spans how far the curve moves on a grid twice as fine (2 refine + 1 nodes
+  // between two readings' diameters): the grid's own coarseness, which no replica shows.
+  bool grid_bias = true;
+  // Where the readings' strict bounds are wider than this (pp), the readings cannot tell the
+  // curve there (InvertedCurve::open): the band is then the bounds, and the output says so.
+  double open_width = 40;
 };
 
 // The default reading resolutions: 152H 1 g/L (its graduation), the sphere's balance 1 mg,
@@ -73,6 +80,11 @@ struct InvertedCurve {
   std::vector<double> bound_tolerance;        // per reading, in its unit
   double resolved_min = 0, resolved_max = 0;  // reading_diameter's extremes
   std::vector<double> reading_diameter;  // where each reading pins the curve, m (model_diameter)
+  // Per node: 1 where the strict bounds are wider than InversionOptions::open_width, i.e. where
+  // any curve the readings allow may lie tens of pp from this one (a knee between two
+  // readings); there the band is the bounds. Empty without bounds.
+  std::vector<std::uint8_t> open;
+  double open_width = 0;  // pp, the options'
 
   // Linear in log d between nodes; 0 below a decade under the first node, 100 above 4x the
   // last (the finest and coarsest bins' spans).
@@ -91,6 +103,10 @@ struct InvertedCurve {
     double diameter = 0;  // m
   };
   OpenInterval widest_open() const;
+  // Whether the readings cannot tell the curve at `diameter` (bounds wider than open_width).
+  bool open_at(double diameter) const;
+  // The runs of open nodes within the resolved diameters, as (smallest, largest) diameter, m.
+  std::vector<std::pair<double, double>> open_ranges() const;
 };
 
 // Invalid input for the inversion: names the row (0-based, or kNoRow), the field, the value

@@ -18,13 +18,17 @@ const ReadingFormat& reading_format(Test test) {
 }
 
 std::vector<Measurement> read_measurements_csv(std::istream& in, Test test) {
+  return read_measurements(read_lab_text(in), test);
+}
+
+std::vector<Measurement> read_measurements(const LabTable& table, Test test) {
   if (test == Test::hydrometer)
-    throw std::invalid_argument("read_measurements_csv: the 152H's readings are read by core/lab");
+    throw std::invalid_argument("read_measurements: the 152H's readings are read by core/lab");
   std::vector<Measurement> out;
   std::vector<std::size_t> lines;
-  const auto rows = read_numeric_csv(in, {"time_min", reading_format(test).lab_column}, {}, &lines);
+  const auto rows = lab_columns(table, {"time_min", reading_format(test).lab_column}, {}, &lines);
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    check_lab_time_min(lines[i], rows[i][0]);
+    check_lab_time_min(lines[i], rows[i][0], table.place);
     out.push_back({rows[i][0] * 60.0, rows[i][1]});
   }
   return out;

@@ -7,6 +7,7 @@
 #include "core/instruments/granulometry.h"
 #include "core/invert/inversion.h"
 #include "core/lab/hydrometer_reduction.h"
+#include "core/lab/lab_table.h"
 
 namespace sedem::invert {
 
@@ -26,6 +27,9 @@ const ReadingFormat& reading_format(Test test);
 // The sphere's or the pipette's readings: a CSV with time_min and the lab_column
 // (any order, other columns ignored). Times to s, values as read (g). Throws LabCsvError.
 std::vector<Measurement> read_measurements_csv(std::istream& in, Test test);
+// The same from a table already read (a text file or a workbook's sheet); the columns may be
+// named in the laboratory's words and units ("time (s)", "apparent mass (g)", "dry mass [mg]").
+std::vector<Measurement> read_measurements(const LabTable& table, Test test);
 
 // The standard reduction of the sphere's or the pipette's readings, as a DEM run reduces
 // them: Stokes' diameter at the instrument's depth (Eq. 16), Eq. 22 (sphere) or Eq. 17

@@ -103,24 +103,33 @@ RunEnd Simulation::run(const RunControl& control) {
   return result;
 }
 
-void Simulation::run_here() {
+void Simulation::run_here(const StepWatch& after_step) {
   for (double t : observers_.times()) {
     if (t < engine_->time()) continue;
-    engine_->advance_to(t);
+    if (after_step) {
+      // Engine::advance_to's own loop, watched.
+      while (engine_->time() < t) {
+        engine_->step(t);
+        after_step(engine_->time(), engine_->stats());
+      }
+    } else {
+      engine_->advance_to(t);
+    }
     observers_.show_in_place(engine_->time(), engine_->particles());
     peak_engine_bytes_ = std::max(peak_engine_bytes_, engine_->bytes());
   }
   peak_engine_bytes_ = std::max(peak_engine_bytes_, engine_->bytes());
 }
 
-SimulationRun simulate(const Scene& scene, Sample sample, bool keep_last) {
+SimulationRun simulate(const Scene& scene, Sample sample, bool keep_last,
+                       const Simulation::StepWatch& after_step) {
   const auto start = std::chrono::steady_clock::now();
   SimulationRun run;
   run.particles = sample.particles.size();
   Simulation simulation(scene, std::move(sample));
   InstrumentObserver instruments(test_setup(scene), simulation.sample());
   simulation.watch(instruments);
-  simulation.run_here();
+  simulation.run_here(after_step);
   run.results = instruments.results();
   run.stats = simulation.stats();
   if (keep_last) run.last = simulation.particles();

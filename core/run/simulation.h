@@ -79,9 +79,12 @@ class Simulation {
   // through every observer's time to the scene's end. Snapshots taken before a stop are shown
   // too. An observer's exception ends the run and is rethrown, the engine at rest.
   RunEnd run(const RunControl& control = {});
+  // Called after each engine step of run_here with the engine's time and counts, to see where
+  // a run's time goes (the benchmarks). It only looks: the engine takes the same steps.
+  using StepWatch = std::function<void(double time, const EngineStats& stats)>;
   // The engine on the calling thread, to the last time an observer wants (no further): the
   // observers look at the engine's particles in place, with no copy (64 MB at a million).
-  void run_here();
+  void run_here(const StepWatch& after_step = {});
   // The largest Engine::bytes() seen at the observers' times of run_here.
   std::size_t peak_engine_bytes() const { return peak_engine_bytes_; }
 
@@ -106,7 +109,8 @@ struct SimulationRun {
 };
 
 // The instruments read the engine's particles in place. `keep_last` copies them into
-// SimulationRun::last at the end.
-SimulationRun simulate(const Scene& scene, Sample sample, bool keep_last = false);
+// SimulationRun::last at the end; `after_step` sees every step (Simulation::run_here).
+SimulationRun simulate(const Scene& scene, Sample sample, bool keep_last = false,
+                       const Simulation::StepWatch& after_step = {});
 
 }  // namespace sedem

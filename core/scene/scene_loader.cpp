@@ -1,6 +1,9 @@
 #include "core/scene/scene_loader.h"
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -190,6 +193,76 @@ void settle_exclusives(const Schema& schema, const Layer& layer) {
   }
 }
 
+// The shortest text of si / to_si in the user's unit that a scene reads back to si bit for bit
+// (12.3 µm comes back as "12.3", not as 12.299999999999999): a run of the resolved scene is
+// the run of the scene it was resolved from. A quotient of the division that no decimal
+// multiplies back to si exactly (none known) keeps 17 digits, within an ulp.
+std::string exact_number(double si, double to_si) {
+  // to_chars and from_chars, not printf and strtod: no locale can make the point a comma.
+  auto parse = [](const std::string& t) {
+    double x = 0;
+    std::from_chars(t.data(), t.data() + t.size(), x);
+    return x;
+  };
+  auto digits = [](double x, int n) {
+    char buffer[40];
+    const auto end =
+        std::to_chars(buffer, buffer + sizeof buffer, x, std::chars_format::general, n).ptr;
+    return std::string(buffer, end);
+  };
+  // The shortest form of a double ("20", not "2e+01").
+  auto shortest = [](double x) {
+    char buffer[40];
+    return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, x).ptr);
+  };
+  const double user = si / to_si;
+  for (int n = 1; n <= 17; ++n)
+    if (const double x = parse(digits(user, n)); x * to_si == si) return shortest(x);
+  // The division may land an ulp or two from the one double that multiplies back exactly.
+  for (const double toward : {-HUGE_VAL, HUGE_VAL}) {
+    double near = user;
+    for (int step = 0; step < 2; ++step) {
+      near = std::nextafter(near, toward);
+      if (near * to_si == si) return shortest(near);
+    }
+  }
+  return shortest(user);
+}
+
+// A TOML basic string: quotes, backslashes and control characters escaped.
+std::string toml_string(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      char escape[8];
+      std::snprintf(escape, sizeof escape, "\\u%04x", unsigned(static_cast<unsigned char>(c)));
+      out += escape;
+    } else {
+      out += c;
+    }
+  }
+  return out + '"';
+}
+
+// A key's value as resolved_toml writes it: numbers exact, strings escaped.
+std::string exact_user_value(const Param& p) {
+  if (const auto* v = std::get_if<double*>(&p.target)) return exact_number(**v, p.to_si);
+  if (const auto* v = std::get_if<std::vector<double>*>(&p.target)) {
+    std::string list = "[";
+    for (std::size_t i = 0; i < (*v)->size(); ++i) {
+      if (i) list += ", ";
+      list += exact_number((**v)[i], p.to_si);
+    }
+    return list + ']';
+  }
+  if (const auto* v = std::get_if<std::string*>(&p.target))
+    return toml_string(current_choice(p, **v));
+  return format_user_value(p);
+}
+
 }  // namespace
 
 Scene parse_scene(std::string_view text, const std::string& source_name,
@@ -247,7 +320,7 @@ std::string resolved_toml(Scene& scene) {
   Schema schema = scene.schema();
   std::ostringstream os;
   for (const auto& p : schema.params()) {
-    os << p.key << " = " << format_user_value(p);
+    os << p.key << " = " << exact_user_value(p);
     if (!p.unit.empty()) os << "  # " << p.unit;
     os << '\n';
   }

@@ -20,8 +20,10 @@ Scene load_scene(const std::filesystem::path& file, const std::vector<std::strin
 Scene parse_scene(std::string_view toml, const std::string& source_name,
                   const std::vector<std::string>& overrides = {});
 
-// The resolved scene as TOML, every key with its value in user units (for run.json and for
-// checking what a run used).
+// The resolved scene as TOML, every key with its value in user units: a scene file of its own
+// that loads back to the same scene bit for bit (each number the shortest text that does), so
+// that a run of it is the run of the scene and overrides it was resolved from (the scenes
+// `sedem batch --emit` writes for each task).
 std::string resolved_toml(Scene& scene);
 
 }  // namespace sedem

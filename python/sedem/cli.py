@@ -120,14 +120,23 @@ def batch(scenes, out="out/batch", sweep=None, set=None, jobs=1, overwrite=False
 
 
 def reduce(readings, method="d7928", gs=2.65, mass_g=50.0, out=None, frame=True,
-           volume_ml=1000.0):
-    """`sedem reduce`: a laboratory's hydrometer readings (CSV with time_min,
-    reading_g_per_l, temperature_c) to diameters and percent finer, ASTM D7928 or, with
-    method="d422", D422. Returns the table, one row per reading, diameters in µm
-    (diameter_um; the file `out`, when given, keeps sedem's diameter_m)."""
+           volume_ml=1000.0, sheet=None, sieve=None, sieve_sheet=None, sieve_total_g=None,
+           separating_sieve_mm=None, report=None):
+    """`sedem reduce`: a laboratory's hydrometer readings (CSV with ',' or ';', tab-separated
+    text or .xlsx, `sheet` its sheet; time_min, reading_g_per_l, temperature_c or the lab's
+    names and units) to diameters and percent finer, ASTM D7928 or, with method="d422", D422.
+    With `sieve` (the sieve analysis, docs/lab.md) the whole grading curve, each row marked
+    by its `source`; `report` writes the lab report page. Returns the table, one row per
+    point, diameters in µm (diameter_um; the file `out`, when given, keeps sedem's
+    diameter_m)."""
     from .tables import with_units
     args = ["reduce", readings, "--method", method, "--gs", gs, "--mass-g", mass_g,
             "--volume-ml", volume_ml]
+    for flag, value in (("--sheet", sheet), ("--sieve", sieve), ("--sieve-sheet", sieve_sheet),
+                        ("--sieve-total-g", sieve_total_g),
+                        ("--separating-sieve-mm", separating_sieve_mm), ("--report", report)):
+        if value is not None:
+            args += [flag, value]
     if out is not None:
         _sedem(args + ["--out", out])
         return with_units(read_csv(out, frame=frame))

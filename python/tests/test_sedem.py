@@ -154,3 +154,17 @@ def test_design_returns_its_readings(tmp_path):
     assert {"schedule", "source", "time_min"} <= set(d.columns)
     assert {"standard"} <= set(d.schedule)
     assert out["record"]["test"] == "hydrometer"
+
+
+def test_reduce_the_whole_curve(tmp_path):
+    """';' and decimal commas, a sieve analysis: the whole curve, its sources, by hand (the
+    hydrometer's 80 and 60 % of the fraction passing 75 um, 50 % of the sample)."""
+    lab = tmp_path / "lab.csv"
+    lab.write_text("time (min);R (g/L);T (\u00b0C)\n2;40;20,0\n5;30;20\n", encoding="utf-8")
+    sieves = tmp_path / "sieves.csv"
+    sieves.write_text("opening (mm),mass retained (g)\n4.75,12\n2,18\n0.075,70\npan,100\n")
+    table = sedem.reduce(str(lab), mass_g=50, sieve=str(sieves), separating_sieve_mm=0.075,
+                         report=str(tmp_path / "r.html"), frame=False)
+    assert list(table["source"]) == ["sieve", "sieve", "sieve", "hydrometer", "hydrometer"]
+    np.testing.assert_allclose(table["percent_finer"], [94, 85, 50, 40, 30])
+    assert (tmp_path / "r.html").exists()

@@ -13,12 +13,10 @@ struct CommandResult {
   std::string output;  // stdout and stderr together
 };
 
-// Runs the sedem executable with `args` (a shell-quoted string) and returns its exit status
-// and output.
-inline CommandResult run_sedem(const std::string& args) {
-  const std::string command = std::string(SEDEM_EXE) + " " + args + " 2>&1";
+// Runs a shell command line and returns its exit status and output (stdout and stderr).
+inline CommandResult run_command(const std::string& command) {
   CommandResult result;
-  FILE* pipe = ::popen(command.c_str(), "r");
+  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
   if (!pipe) return result;
   std::array<char, 4096> buffer;
   std::size_t n;
@@ -27,6 +25,12 @@ inline CommandResult run_sedem(const std::string& args) {
   const int raw = ::pclose(pipe);
   result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
   return result;
+}
+
+// Runs the sedem executable with `args` (a shell-quoted string) and returns its exit status
+// and output.
+inline CommandResult run_sedem(const std::string& args) {
+  return run_command(std::string(SEDEM_EXE) + " " + args);
 }
 
 }  // namespace sedem::test

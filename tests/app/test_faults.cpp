@@ -250,18 +250,10 @@ TEST(Faults, RenderPartialMarksEveryOutput) {
   EXPECT_EQ(record["status"], "interrupted");
 }
 
-// 4. A long loop checks for a stop: 10 000 profile times (each a snapshot, a profile of every
-// layer) stop within about a second of SIGTERM, with a checkpoint and "interrupted".
-TEST(Faults, ManyProfileTimesStopPromptly) {
-  const fs::path dir = fresh("many_profiles");
-  std::string times = "[";
-  for (int i = 0; i < 10000; ++i) {
-    if (i) times += ',';
-    times += std::to_string(i * 0.0002);
-  }
-  times += "]";
-  auto r = test::run_sedem("run " + kDemo + " --set output.frames=false --quiet --set " +
-                           "'instruments.profile_times_min=" + times + "' --out " + dir.string() +
+// Runs `sedem run ARGS`, sends SIGTERM after 4 s and expects a clean stop within 3 s: exit
+// 130, "interrupted" and a checkpoint.
+void expect_prompt_stop(const fs::path& dir, const std::string& args) {
+  auto r = test::run_sedem("run " + args + " --out " + dir.string() +
                            " & pid=$!; sleep 4; start=$(date +%s%N); kill -TERM $pid; wait $pid;" +
                            " status=$?; echo \"stopped in $(( ($(date +%s%N) - start) / " +
                            "1000000 )) ms\"; exit $status");
@@ -271,6 +263,29 @@ TEST(Faults, ManyProfileTimesStopPromptly) {
   EXPECT_LT(std::stoi(r.output.substr(at + 11)), 3000) << r.output;
   EXPECT_EQ(read_json(dir / "run.json")["status"], "interrupted");
   EXPECT_TRUE(fs::exists(dir / "checkpoint.bin"));
+}
+
+// 4. A long loop checks for a stop: 10 000 profile times (each a snapshot, a profile of every
+// layer) stop within about a second of SIGTERM, with a checkpoint and "interrupted".
+TEST(Faults, ManyProfileTimesStopPromptly) {
+  std::string times = "[";
+  for (int i = 0; i < 10000; ++i) {
+    if (i) times += ',';
+    times += std::to_string(i * 0.0002);
+  }
+  times += "]";
+  expect_prompt_stop(fresh("many_profiles"), kDemo + " --set output.frames=false --quiet --set " +
+                                                 "'instruments.profile_times_min=" + times + "'");
+}
+
+// 4. Coasting on windows far shorter than a step (integrator.max_coast_s near the least the
+// scene check allows) keeps a stop prompt: a step with no member moving takes a bounded number
+// of syncs, where one max_step_s once held about 1e8 of them and a minute and a half of work.
+TEST(Faults, ShortCoastingWindowsStopPromptly) {
+  expect_prompt_stop(fresh("short_coasting"),
+                     kDemo + " --set output.frames=false --quiet --set run.end_time_s=60 --set " +
+                         "integrator.local_steps=true --set integrator.max_coast_s=2e-5 --set " +
+                         "sample.simulated_count=3000");
 }
 
 // 2. Doubts on a run: too few particles in an instrument's volume, counted, in run.json.
@@ -379,7 +394,8 @@ TEST(Faults, ADamagedSeriesIsRefusedNamingTheFile) {
   for (std::size_t i = changed.size() / 2; i < changed.size() / 2 + 300; ++i)
     changed[i] = char(changed[i] * 7 + 3);
   write_text(vtp, changed);
-  expect_refused(test::run_sedem("render " + dir.string()), {"particles_000001.vtp", "damaged"});
+  expect_refused(test::run_sedem("render " + dir.string()),
+                 {"particles_000001.vtp", "damaged", "corrupted"});
   fs::remove(vtp);
   expect_refused(test::run_sedem("render " + dir.string()), {"particles_000001.vtp"});
   write_text(vtp, data);

@@ -5,9 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -15,6 +13,7 @@
 
 #include "cli_runner.h"
 #include "core/stats/seed_statistics.h"
+#include "csv_rows.h"
 
 namespace sedem {
 namespace {
@@ -29,39 +28,8 @@ const std::string kTiny =
     " --set instruments.buoyancy.times_min=[0.25] --set instruments.pipette.times_min=[0.25]"
     " --quiet";
 
-using Row = std::map<std::string, std::string>;
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> cells;
-  std::stringstream s(line);
-  std::string cell;
-  while (std::getline(s, cell, ',')) cells.push_back(cell);
-  if (!line.empty() && line.back() == ',') cells.push_back("");
-  return cells;
-}
-
-// A CSV whose cells hold no comma, as rows by column name.
-std::vector<Row> read_rows(const fs::path& file) {
-  std::ifstream in(file);
-  std::string line;
-  std::getline(in, line);
-  const auto header = split(line);
-  std::vector<Row> rows;
-  while (std::getline(in, line)) {
-    const auto cells = split(line);
-    EXPECT_EQ(cells.size(), header.size()) << line;
-    Row row;
-    for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i) row[header[i]] = cells[i];
-    rows.push_back(row);
-  }
-  return rows;
-}
-
-double cell(const Row& row, const std::string& column) {
-  const auto it = row.find(column);
-  EXPECT_NE(it, row.end()) << column;
-  return it == row.end() || it->second.empty() ? NAN : std::stod(it->second);
-}
+using test::cell;
+using test::read_rows;
 
 nlohmann::json read_json(const fs::path& file) {
   std::ifstream in(file);

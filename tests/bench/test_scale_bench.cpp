@@ -3,10 +3,16 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "bench/bench_support.h"
 #include "bench/scale_run.h"
+#include "core/run/simulation.h"
+#include "core/run/stage_setups.h"
+#include "core/sample/sample_builder.h"
+#include "core/scene/scene_loader.h"
 
 namespace sedem {
 namespace {
@@ -79,6 +85,83 @@ TEST(ScaleBench, WritesOneSaneCsvRowPerRun) {
   }
   EXPECT_NEAR(number("merit_particle_s_per_wall_s"), 200 * 18 / wall, 1e-6 * 200 * 18 / wall);
   EXPECT_TRUE(fs::exists(out / "bench_scale_plot.png"));
+  // 20 s reach neither 60 s nor 600 s: those cells are empty, the whole run's are not.
+  EXPECT_EQ(value("wall_to_60_s"), "");
+  EXPECT_EQ(value("steps_to_600"), "");
+  EXPECT_GE(number("members_per_step"), 0);
+  EXPECT_GE(number("contacts_per_step"), 0);
+}
+
+// The first minutes apart: 90 s of the demo, read at 0.5 and 1.5 min, reach 60 s but not
+// 600 s. The span to 60 s holds part of the run's steps and wall time, and the means of the
+// members and the contacts over those steps.
+TEST(ScaleBench, ReportsTheFirstMinuteApart) {
+  const fs::path out = fs::path(SEDEM_TEST_OUTPUT) / "bench_scale_spans";
+  fs::remove_all(out);
+  bench::ScaleOptions options;
+  options.scenes = {std::string(SEDEM_SOURCE_DIR) + "/scenes/demo.toml"};
+  options.counts = {300};
+  options.end_time_s = 90;
+  options.sets = {"instruments.hydrometer.times_min=[0.5, 1.5]",
+                  "instruments.buoyancy.times_min=[0.5, 1.5]",
+                  "instruments.pipette.times_min=[0.5, 1.5]", "instruments.profile_times_min=[]"};
+  options.out = out;
+  options.plot = false;
+  const auto rows = bench::run_scale_bench(options, nullptr);
+  ASSERT_EQ(rows.size(), 1u);
+  ASSERT_EQ(rows[0].status, "ok") << rows[0].message;
+  const auto& spans = rows[0].spans;
+  ASSERT_EQ(spans.size(), 3u);
+  EXPECT_TRUE(spans[0].reached);
+  EXPECT_EQ(spans[0].until_s, 60);
+  EXPECT_FALSE(spans[1].reached);  // the run ends at 90 s
+  EXPECT_TRUE(spans[2].reached);
+  EXPECT_DOUBLE_EQ(spans[2].until_s, 90);
+  EXPECT_GT(spans[0].steps, 0);
+  EXPECT_LT(spans[0].steps, spans[2].steps);
+  EXPECT_EQ(spans[2].steps, rows[0].steps);  // every step watched
+  EXPECT_GT(spans[0].wall_s, 0);
+  EXPECT_LE(spans[0].wall_s, spans[2].wall_s);
+  EXPECT_EQ(spans[2].wall_s, rows[0].wall_s);
+  // Members: at most every particle, and some at the start, where the demo's grains crowd.
+  EXPECT_GT(spans[0].members, 0);
+  EXPECT_LE(spans[0].members, 300);
+  EXPECT_LE(spans[0].contacts, spans[0].members);
+  std::ifstream csv(out / "bench_scale.csv");
+  std::string header, line;
+  ASSERT_TRUE(std::getline(csv, header));
+  ASSERT_TRUE(std::getline(csv, line));
+  const auto names = split(header), cells = split(line);
+  ASSERT_EQ(names.size(), cells.size());
+  std::map<std::string, std::string> row;
+  for (std::size_t i = 0; i < names.size(); ++i) row[names[i]] = cells[i];
+  EXPECT_NEAR(std::stod(row.at("wall_to_60_s")), spans[0].wall_s, 1e-9 * spans[0].wall_s);
+  EXPECT_EQ(std::stoll(row.at("steps_to_60")), spans[0].steps);
+  EXPECT_EQ(row.at("wall_to_600_s"), "");
+}
+
+// Watching every step changes nothing: the same steps, the same readings, the same particles
+// bit for bit as the run that is not watched.
+TEST(ScaleBench, WatchingEveryStepChangesNothing) {
+  const Scene scene = load_scene(
+      std::string(SEDEM_SOURCE_DIR) + "/scenes/demo.toml",
+      {"sample.simulated_count=300", "run.end_time_s=90",
+       "instruments.hydrometer.times_min=[0.5, 1.5]", "instruments.profile_times_min=[]"});
+  const SimulationRun plain = simulate(scene, build_sample(sample_setup(scene)), true);
+  std::int64_t watched_steps = 0;
+  const SimulationRun watched = simulate(scene, build_sample(sample_setup(scene)), true,
+                                         [&](double, const EngineStats&) { ++watched_steps; });
+  EXPECT_EQ(watched_steps, plain.stats.steps);
+  EXPECT_EQ(watched.stats.steps, plain.stats.steps);
+  EXPECT_EQ(watched.stats.particle_steps, plain.stats.particle_steps);
+  ASSERT_EQ(watched.last.size(), plain.last.size());
+  for (std::size_t i = 0; i < plain.last.size(); ++i) {
+    ASSERT_EQ(watched.last.x[i], plain.last.x[i]) << i;
+    ASSERT_EQ(watched.last.y[i], plain.last.y[i]) << i;
+    ASSERT_EQ(watched.last.vy[i], plain.last.vy[i]) << i;
+  }
+  EXPECT_EQ(bench::test_error(watched.results, "hydrometer"),
+            bench::test_error(plain.results, "hydrometer"));
 }
 
 }  // namespace

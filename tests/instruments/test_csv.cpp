@@ -96,7 +96,7 @@ TEST(Csv, LabReadingsInTheLaboratorysUnits) {
   write_lab_points_csv(out, points);
   EXPECT_EQ(out.str().substr(0, out.str().find('\n')),
             "time_s,diameter_m,percent_finer,corrected_reading_g_per_l,effective_depth_m,"
-            "viscosity_pa_s");
+            "viscosity_pa_s,time_min,diameter_mm,diameter_um");
 }
 
 TEST(Csv, LabReadingsErrorsNameLineAndColumn) {
@@ -105,7 +105,13 @@ TEST(Csv, LabReadingsErrorsNameLineAndColumn) {
     read_lab_readings_csv(missing);
     ADD_FAILURE() << "accepted a header without temperature_c";
   } catch (const LabCsvError& e) {
-    EXPECT_EQ(std::string(e.what()), "line 1, column temperature_c: missing from the header");
+    // What was found and what the laboratory may write for it follow.
+    EXPECT_EQ(std::string(e.what()).rfind("line 1, column temperature_c: missing from the header "
+                                          "(found 'time_min', 'reading_g_per_l'); expected the "
+                                          "temperature, as temperature_c or e.g. T (",
+                                          0),
+              0u)
+        << e.what();
   }
   std::istringstream bad("time_min,reading_g_per_l,temperature_c\n2,40,20\n5,3O,20\n");
   try {

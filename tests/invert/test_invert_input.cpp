@@ -69,6 +69,26 @@ TEST(InvertInput, TooFewReadingsOrTooFineAGrid) {
             std::string::npos);
 }
 
+// The sphere's and the pipette's readings in the lab's words and units, ';' and decimal commas:
+// seconds to s as they are, mg to g.
+TEST(InvertInput, ReadsTheLabsNamesAndUnits) {
+  struct Case {
+    const char* csv;
+    invert::Test test;
+    double first_time_s, first_value_g;
+  };
+  for (const Case& c :
+       {Case{"elapsed time, s;Apparent mass (mg)\n30;1250,5\n120;1248\n", invert::Test::buoyancy,
+             30.0, 1.2505},
+        Case{"Time [h]\tDry mass [g]\n0.5\t1.4\n2\t1.1\n", invert::Test::pipette, 1800.0, 1.4}}) {
+    std::istringstream in(c.csv);
+    const auto m = read_measurements_csv(in, c.test);
+    EXPECT_EQ(m.size(), 2u) << c.csv;
+    EXPECT_DOUBLE_EQ(m.at(0).time, c.first_time_s) << c.csv;
+    EXPECT_DOUBLE_EQ(m.at(0).value, c.first_value_g) << c.csv;
+  }
+}
+
 TEST(InvertInput, ReadsTheSphereAndPipetteColumns) {
   std::istringstream csv("dry_mass_g,time_min\n1.4,1\n1.1,4\n");
   const auto m = read_measurements_csv(csv, invert::Test::pipette);
@@ -82,7 +102,14 @@ TEST(InvertInput, ReadsTheSphereAndPipetteColumns) {
     read_measurements_csv(missing, invert::Test::pipette);
     FAIL();
   } catch (const LabCsvError& e) {
-    EXPECT_STREQ(e.what(), "line 1, column dry_mass_g: missing from the header");
+    EXPECT_EQ(std::string(e.what()).rfind("line 1, column dry_mass_g: missing from the header", 0),
+              0u)
+        << e.what();
+    // "mass" alone is not the pipette's dry mass (a wet mass?): what was expected follows.
+    EXPECT_NE(std::string(e.what()).find("expected the pipette sample's dry mass, as dry_mass_g "
+                                         "or e.g. dry mass (g)"),
+              std::string::npos)
+        << e.what();
   }
 }
 
@@ -123,7 +150,8 @@ TEST(InvertCommand, ClayLoamRecordWritesCurveBandAndFigure) {
   std::getline(fit, header);
   EXPECT_EQ(header,
             "time_s,measured_g_per_l,fitted_g_per_l,pinned_diameter_m,inverted_percent_finer,"
-            "standard_diameter_m,standard_percent_finer");
+            "standard_diameter_m,standard_percent_finer,time_min,pinned_diameter_um,"
+            "standard_diameter_um");
   // The summary, read back: the discrepancy principle met, the band's prior spread never
   // below the chosen lambda's, the resolved diameters those of the first and last readings.
   const auto summary = nlohmann::json::parse(std::ifstream(dir / "invert.json"));
@@ -142,15 +170,21 @@ TEST(InvertCommand, ClayLoamRecordWritesCurveBandAndFigure) {
   std::getline(curve, header);
   EXPECT_EQ(header,
             "diameter_m,percent_finer,percent_finer_low,percent_finer_high,readings_allow_low,"
-            "readings_allow_high");
+            "readings_allow_high,diameter_um,readings_tell");
   int nodes = 0;
   for (std::string line; std::getline(curve, line); ++nodes) {
     std::vector<double> v;
     std::stringstream row(line);
     for (std::string cell; std::getline(row, cell, ',');) v.push_back(std::stod(cell));
-    ASSERT_EQ(v.size(), 6u) << line;
+    ASSERT_EQ(v.size(), 8u) << line;
+    EXPECT_NEAR(v[6], v[0] * 1e6, 1e-9 * v[6]) << line;
     EXPECT_LE(v[4], v[1] + 1e-6) << line;
     EXPECT_GE(v[5], v[1] - 1e-6) << line;
+    // Where the readings cannot tell (bounds wider than 40 pp), the band is what they allow.
+    EXPECT_EQ(v[7], v[5] - v[4] > 40 ? 0 : 1) << line;
+    if (v[7] == 0) {
+      EXPECT_TRUE(v[2] <= v[4] + 1e-6 && v[3] >= v[5] - 1e-6) << line;
+    }
   }
   EXPECT_GT(nodes, 7);
   const auto allow = summary.at("readings_allow");

@@ -92,10 +92,20 @@ void LocalStepper::step(double limit) {
   // member step is cut short by a sync (steps of a few ns would turn the projection's
   // corrections into runaway speeds).
   ahead_.clear();
+  std::size_t idle_syncs = 0;
+  double last_sync = e_.time;
   for (;;) {
     failed_.clear();
     while (!syncs_.empty() && syncs_.front().first <= target) {
+      // Nothing moves between syncs, so ending the step between two of them changes nothing
+      // but where a stop may come (syncs at one time are all taken: none ends unlooked-at).
+      if (!moving && idle_syncs >= kIdleStepSyncs && syncs_.front().first > last_sync) {
+        target = last_sync;
+        break;
+      }
       const auto [t, id] = syncs_.front();
+      last_sync = t;
+      ++idle_syncs;
       std::pop_heap(syncs_.begin(), syncs_.end(), kLater);
       syncs_.pop_back();
       if (kind_[id] != GrainKind::coasting || t1_[id] != t) continue;  // engaged since: stale

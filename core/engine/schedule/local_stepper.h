@@ -94,6 +94,10 @@ class LocalStepper {
   static constexpr std::uint32_t kNoMember = 0xFFFFFFFF;
   using Sync = std::pair<double, std::uint32_t>;
   static constexpr auto kLater = std::greater<Sync>{};
+  // Syncs one step takes at most while no member moves: the step then ends at the last one
+  // taken. A step is the engine's unit of stopping, and with every grain coasting on short
+  // windows (integrator.max_coast_s) one max_step_s could hold 1e8 syncs and minutes of work.
+  static constexpr std::size_t kIdleStepSyncs = 1 << 16;
 
   // Coasting and syncs (local_coasting.cpp).
   bool coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit,
