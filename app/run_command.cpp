@@ -115,9 +115,11 @@ std::string engine_message(const std::string& what) {
   return "the engine failed: " + what;
 }
 
-int run_in(const RunOptions& options, RunContext& ctx) {
+int run_in(const RunOptions& options, const RunHooks& hooks, RunContext& ctx) {
   // From the first instruction: a stop asked during the set-up ends the run at its start.
-  install_stop_handlers();
+  if (!hooks.stop_requested) install_stop_handlers();
+  const std::function<bool()> stop =
+      hooks.stop_requested ? hooks.stop_requested : std::function<bool()>(stop_requested);
   bool resuming = !options.resume_dir.empty();
   bool overwrite = options.overwrite;
   fs::path out = options.resume_dir;
@@ -128,8 +130,9 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   std::string first_scene_file = options.scene;
   try {
     bool from_start = false;
-    scene = resuming ? scene_of_run(out, first_scene_file, from_start)
-                     : load_scene(options.scene, options.overrides);
+    scene = resuming                 ? scene_of_run(out, first_scene_file, from_start)
+            : !options.scene.empty() ? load_scene(options.scene, options.overrides)
+                                     : parse_scene(options.scene_text, "scene", options.overrides);
     if (from_start) {
       // Nothing computed was kept: the run starts again, replacing its own outputs only.
       std::cerr << "sedem: " << out.string()
@@ -249,6 +252,8 @@ int run_in(const RunOptions& options, RunContext& ctx) {
                          "cannot prepare the outputs in " + out.string() + ": " + e.what());
   }
   for (auto& o : run_observers.all) simulation.watch(*o);
+  if (hooks.started) hooks.started(simulation);
+  for (Observer* o : hooks.observers) simulation.watch(*o);
   if (resuming) {
     try {
       replay(simulation, replay_folder(scene, out));
@@ -278,9 +283,12 @@ int run_in(const RunOptions& options, RunContext& ctx) {
   // Two snapshots waiting keep the engine busy while files are written; above a quarter of a
   // million particles (16 MB a snapshot) one: a million-particle run then holds at most two.
   control.capacity = particle_count > 250000 ? 1 : 2;
-  control.stop_requested = [] { return stop_requested(); };
+  control.stop_requested = stop;
   control.poll = std::chrono::milliseconds(100);
-  control.progress = [&](double t, double steps) { progress.update(t, steps); };
+  control.progress = [&](double t, double steps) {
+    progress.update(t, steps);
+    if (hooks.progress) hooks.progress(t, steps);
+  };
   // Periodic checkpoints, while the engine rests between two steps.
   control.checkpoint_every = scene.checkpoint_interval;
   control.checkpoint = [&](const auto& write_engine) {
@@ -335,6 +343,7 @@ int run_in(const RunOptions& options, RunContext& ctx) {
     fail(record, status, exit_code::io_failure,
          std::string("writing the test results failed: ") + e.what());
   }
+  if (hooks.finished) hooks.finished(simulation, run_observers);
   if (status != exit_code::ok && status != exit_code::interrupted) remove_temporary_files(out);
   record.status = status == exit_code::ok            ? "complete"
                   : status == exit_code::interrupted ? "interrupted"
@@ -382,10 +391,10 @@ int run_in(const RunOptions& options, RunContext& ctx) {
 
 }  // namespace
 
-int run(const RunOptions& options) {
+int run(const RunOptions& options, const RunHooks& hooks) {
   RunContext ctx;
   try {
-    return run_in(options, ctx);
+    return run_in(options, hooks, ctx);
   } catch (const std::bad_alloc& e) {
     // An allocation failure anywhere: a message and a final run.json, never an abort.
     const std::string message = engine_message(e.what());

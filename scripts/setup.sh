@@ -10,8 +10,8 @@
 # packages are never changed by that step. tests/render/pvpython.sh runs that pvpython.
 #
 # scripts/setup.sh --build-only installs only what building and running sedem needs (the demo's
-# set-up: CMake's configure also wants GoogleTest and clang-format), not the Python test tools,
-# nor ParaView and its libraries, nor Chromium; a later plain run adds them.
+# set-up: CMake's configure also wants GoogleTest, clang-format and pybind11), not the Python
+# test tools, nor ParaView and its libraries, nor Chromium; a later plain run adds them.
 set -euo pipefail
 
 build_only=false
@@ -25,9 +25,14 @@ packages=(
   libvtk9-dev qt6-base-dev libcairo2-dev fonts-dejavu-core
   libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev libglew-dev
   libgtest-dev googletest clang-format
+  # The Python module sedem._sedem, built with the program.
+  python3-dev pybind11-dev
 )
 $build_only || packages+=(
   python3 python3-numpy python3-vtk9 python3-matplotlib python3-pytest
+  # The Python package's tables and its install into a virtual environment with no index
+  # (pip install --no-build-isolation ./python: the build backend and wheel from Debian).
+  python3-pandas python3-xarray python3-venv python3-pip python3-setuptools python3-wheel
   # The lab-file tests write their .xlsx workbooks with openpyxl.
   python3-openpyxl
   # The figure tests render every SVG and PDF the way readers open them.

@@ -1,8 +1,6 @@
-"""The Python package against a real `sedem`: run through ctest (SEDEM_EXE names the build's
+"""The subprocess path against a real `sedem`: run through ctest (SEDEM_EXE names the build's
 program, SEDEM_TEST_OUTPUT where runs go)."""
 
-import os
-import re
 import shutil
 from pathlib import Path
 
@@ -10,12 +8,7 @@ import numpy as np
 import pytest
 
 import sedem
-
-ROOT = Path(__file__).resolve().parents[2]
-DEMO = str(ROOT / "scenes" / "demo.toml")
-OUT = Path(os.environ.get("SEDEM_TEST_OUTPUT", "/tmp")) / "python"
-SMALL = {"sample.simulated_count": 300, "output.frames": False, "run.end_time_s": 60,
-         "instruments.hydrometer.times_min": [0.25, 0.5, 1]}
+from conftest import DEMO, OUT, SMALL
 
 
 @pytest.fixture(scope="module")
@@ -119,6 +112,48 @@ def test_reduce(tmp_path):
     lab.write_text("time_min,reading_g_per_l,temperature_c\n2,40,20\n5,30,20\n")
     table = sedem.reduce(str(lab), mass_g=50, frame=False)
     np.testing.assert_allclose(table["percent_finer"], [80, 60])
+    # D7928's diameter at 2 min, 20 °C, in µm (the program writes metres).
+    assert "diameter_m" not in table
+    np.testing.assert_allclose(table["diameter_um"][0], 30.086307934799644, rtol=1e-12)
+
+
+CLAY_LOAM = """time_min,reading_g_per_l,temperature_c,composite_correction_g_per_l
+0.66,39,23,2
+2,33,23,2
+5,29,23,2
+15,23,23,2
+30,22,23,2
+60,20,23,2
+180,18,23,2
+"""
+
+
+def test_invert_returns_tables_in_micrometres(tmp_path):
+    """docs/invert.md's clay loam: the inverted curve at 15 min near its 42 %."""
+    pytest.importorskip("pandas")
+    lab = tmp_path / "clay_loam.csv"
+    lab.write_text(CLAY_LOAM)
+    out = sedem.invert(lab, test="hydrometer", out=tmp_path / "inv",
+                       options={"gs": 2.65, "mass-g": 50})
+    curve, fit = out["curve"], out["fit"]
+    assert {"diameter_um", "percent_finer", "percent_finer_low",
+            "percent_finer_high"} <= set(curve.columns)
+    assert "diameter_m" not in curve.columns
+    assert curve.diameter_um.between(0.01, 1e4).all()
+    assert len(fit) == 7 and "time_s" in fit.columns
+    assert out["record"] and (out["path"] / "invert.json").is_file()
+    at = np.interp(12.6, curve.diameter_um, curve.percent_finer)
+    assert at == pytest.approx(42, abs=3)
+
+
+def test_design_returns_its_readings(tmp_path):
+    pytest.importorskip("pandas")
+    out = sedem.design(DEMO, test="hydrometer", out=tmp_path / "design", readings=3,
+                       dem_count=0)
+    d = out["readings"]
+    assert {"schedule", "source", "time_min"} <= set(d.columns)
+    assert {"standard"} <= set(d.schedule)
+    assert out["record"]["test"] == "hydrometer"
 
 
 def test_reduce_the_whole_curve(tmp_path):
@@ -133,18 +168,3 @@ def test_reduce_the_whole_curve(tmp_path):
     assert list(table["source"]) == ["sieve", "sieve", "sieve", "hydrometer", "hydrometer"]
     np.testing.assert_allclose(table["percent_finer"], [94, 85, 50, 40, 30])
     assert (tmp_path / "r.html").exists()
-
-
-def test_the_worked_example_of_docs_python_md(tmp_path, monkeypatch):
-    """docs/python.md's example, as printed, draws Fig. 18 from a run."""
-    pytest.importorskip("matplotlib")
-    import matplotlib
-    matplotlib.use("Agg")
-    text = (ROOT / "docs" / "python.md").read_text()
-    blocks = re.findall(r"```python\n(.*?)```", text, re.S)
-    assert blocks, "docs/python.md has no python example"
-    monkeypatch.chdir(tmp_path)
-    os.symlink(ROOT / "scenes", tmp_path / "scenes")
-    example = blocks[0].replace('"sample.simulated_count": 1500', '"sample.simulated_count": 300')
-    exec(compile(example, "docs/python.md", "exec"), {})
-    assert (tmp_path / "fig18.png").stat().st_size > 10000

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # cmake --install into a fresh prefix; then the installed sedem runs the installed demo scene,
 # the man page and bash completion are there and agree with --help, and the Python package
-# imports from the prefix and runs the installed sedem.
+# imports from the prefix, runs a scene in-process and runs the installed sedem.
 set -euo pipefail
 build=$1 prefix=$2 python=$3 pydir=$4
 rm -rf "$prefix"
@@ -56,12 +56,18 @@ trap 'rm -rf "$work"' EXIT
   fail "the installed sedem cannot run the installed demo"
 [ -f "$work/out/demo/run.json" ] || fail "no out/demo/run.json"
 
-# The Python package from the prefix, running the installed sedem.
+# The Python package from the prefix, where Debian's python3 looks under /usr/local, with its
+# compiled module: a run in the process, and the installed sedem for the rest.
+ls "$prefix/$pydir"/sedem/_sedem*.so > /dev/null || fail "no compiled module in $pydir/sedem"
+/usr/bin/python3 -c 'import sys; sys.exit(sys.argv[1] not in sys.path)' "/usr/local/$pydir" ||
+  fail "/usr/local/$pydir is not on Debian's python3's path"
 (cd "$work" && PATH="$prefix/bin:$PATH" PYTHONPATH="$prefix/$pydir" SEDEM_EXE= "$python" -c '
 import sys, sedem
 assert sedem.__file__.startswith(sys.argv[1]), sedem.__file__
 assert sedem.executable() == sys.argv[2], sedem.executable()
 run = sedem.load_run("out/demo")
 assert run.status == "complete" and run.record["particle_count"] == 200
-' "$prefix" "$exe") || fail "the installed Python package"
+sim = sedem.simulate(sys.argv[3], set={"sample.simulated_count": 300, "output.frames": False})
+assert sim.status == "complete" and len(sim.readings()) > 0
+' "$prefix" "$exe" "$prefix/share/sedem/scenes/demo.toml") || fail "the installed Python package"
 echo "installed into $prefix: program, scenes, docs, man page, completion, Python package"

@@ -2,7 +2,7 @@
 file(GLOB_RECURSE sources
   ${ROOT}/core/*.cpp ${ROOT}/core/*.h ${ROOT}/render/*.cpp ${ROOT}/render/*.h
   ${ROOT}/app/*.cpp ${ROOT}/app/*.h ${ROOT}/tests/*.cpp ${ROOT}/tests/*.h
-  ${ROOT}/bench/*.cpp ${ROOT}/bench/*.h)
+  ${ROOT}/bench/*.cpp ${ROOT}/bench/*.h ${ROOT}/python/*.cpp ${ROOT}/python/*.h)
 set(bad "")
 foreach(f ${sources})
   execute_process(COMMAND ${CLANG_FORMAT} --dry-run --Werror ${f}

@@ -47,7 +47,7 @@ for folder in sorted(p for p in (root / "core").iterdir() if p.is_dir()):
                                 f"{m.group(1)}, against the layer map")
 # Outside core, the engine is seen through its public face (core/model's Snapshot and
 # EngineStats, core/run's Simulation), never its internals.
-for top in ("app", "render"):
+for top in ("app", "render", "python"):
     for f in sorted((root / top).rglob("*")):
         if f.suffix in {".h", ".cpp"}:
             for n, line in enumerate(f.read_text().splitlines(), 1):
