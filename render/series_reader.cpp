@@ -116,7 +116,13 @@ Snapshot read_particles_vtp(const std::filesystem::path& file) {
   reader->SetParserErrorObserver(errors);
   if (!reader->CanReadFile(file.c_str())) damaged(file, "not a VTK XML PolyData file");
   reader->SetFileName(file.c_str());
-  reader->Update();
+  // A damaged header can make VTK size an array from garbage: it then throws (bad_alloc,
+  // length_error) from inside the reader, which is damage too, not a failure to write.
+  try {
+    reader->Update();
+  } catch (const std::exception& e) {
+    damaged(file, std::string("its data does not read back (") + e.what() + ")");
+  }
   if (errors->failed) damaged(file, errors->message.empty() ? "unreadable" : errors->message);
   vtkPolyData* poly = reader->GetOutput();
   auto* pd = poly->GetPointData();

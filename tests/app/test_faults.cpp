@@ -396,6 +396,18 @@ TEST(Faults, ADamagedSeriesIsRefusedNamingTheFile) {
   write_text(vtp, changed);
   expect_refused(test::run_sedem("render " + dir.string()),
                  {"particles_000001.vtp", "damaged", "corrupted"});
+  // A compressed array's block count made huge (8 bytes of the raw appended data): VTK sizes
+  // the array from it and throws bad_alloc, which once ended as a write failure (exit 4).
+  {
+    std::string huge = data;
+    const auto appended = huge.find('_', huge.find("<AppendedData encoding=\"raw\">")) + 1;
+    const auto second = huge.find("offset=\"", huge.find("Name=\"radius\"")) + 8;
+    const std::size_t at = appended + std::stoul(huge.substr(second));
+    huge.replace(at, 8, std::string("\xff\xff\xff\xff\xff\xff\xff\x0f", 8));
+    write_text(vtp, huge);
+    expect_refused(test::run_sedem("render " + dir.string()),
+                   {"particles_000001.vtp", "damaged", "does not read back"});
+  }
   fs::remove(vtp);
   expect_refused(test::run_sedem("render " + dir.string()), {"particles_000001.vtp"});
   write_text(vtp, data);
