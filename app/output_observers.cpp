@@ -26,9 +26,11 @@ ParticleSeriesObserver::ParticleSeriesObserver(std::vector<double> times, const 
 
 namespace {
 
-render::ColumnAnimation::Options animation_options(const Scene& scene, double resume_from) {
+render::ColumnAnimation::Options animation_options(const Scene& scene, double resume_from,
+                                                   bool partial) {
   render::ColumnAnimation::Options o;
   o.label = scene.name;
+  if (partial) o.label += " (partial run)";
   o.panel_width = int(scene.output.frame_width);
   o.panel_height = int(scene.output.frame_height);
   // The suspension starts uniform, 1/bands of the mass in each band: black at twice that,
@@ -43,9 +45,9 @@ render::ColumnAnimation::Options animation_options(const Scene& scene, double re
 }  // namespace
 
 ColumnFrameObserver::ColumnFrameObserver(const Scene& scene, const std::filesystem::path& out_dir,
-                                         double resume_from)
+                                         double resume_from, bool partial)
     : times_(every(scene.output.interval, scene.end_time)),
-      animation_(out_dir, scene.cylinder, animation_options(scene, resume_from)) {}
+      animation_(out_dir, scene.cylinder, animation_options(scene, resume_from, partial)) {}
 
 FieldsObserver::FieldsObserver(const Scene& scene, const std::filesystem::path& out_dir,
                                double resume_from)
@@ -97,7 +99,8 @@ RunObservers make_observers(const Scene& scene, const Sample& sample,
   if (scene.output.fields)
     r.all.push_back(std::make_unique<FieldsObserver>(scene, out_dir, start.resume_from));
   if (scene.output.frames) {
-    r.all.push_back(std::make_unique<ColumnFrameObserver>(scene, out_dir, start.resume_from));
+    r.all.push_back(
+        std::make_unique<ColumnFrameObserver>(scene, out_dir, start.resume_from, start.partial));
     auto columns = std::make_unique<ColumnFigureObserver>(scene);
     r.columns = columns.get();
     r.all.push_back(std::move(columns));

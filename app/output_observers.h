@@ -33,7 +33,8 @@ class ParticleSeriesObserver : public Observer {
 // zoom insets, on one grey scale for the whole sequence.
 class ColumnFrameObserver : public Observer {
  public:
-  ColumnFrameObserver(const Scene& scene, const std::filesystem::path& out_dir, double resume_from);
+  ColumnFrameObserver(const Scene& scene, const std::filesystem::path& out_dir, double resume_from,
+                      bool partial = false);
   std::string name() const override { return "frames"; }
   std::vector<double> wanted_times() const override { return times_; }
   void observe(const Snapshot& snapshot) override { animation_.add(snapshot); }
@@ -90,6 +91,8 @@ struct ObserverStart {
   bool write_particles = true;
   // A resumed run: the series in out_dir keep what they hold before this time and go on.
   double resume_from = -std::numeric_limits<double>::infinity();
+  // Redrawn from a run that did not complete (sedem render --partial): each frame says so.
+  bool partial = false;
 };
 
 RunObservers make_observers(const Scene& scene, const Sample& sample,

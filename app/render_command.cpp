@@ -106,7 +106,8 @@ LabelledResults render_one(const fs::path& dir, bool quiet, bool partial,
   } catch (const render::SeriesError& e) {
     throw RenderFailure(e.what(), exit_code::invalid_scene);
   }
-  RunObservers observers = make_observers(scene, sample, dir, {.write_particles = false});
+  RunObservers observers = make_observers(
+      scene, sample, dir, {.write_particles = false, .partial = incomplete_run_taken});
   // The run's pipeline with the saved series in the engine's place.
   ObserverSet replayed;
   for (auto& o : observers.all) replayed.add(*o);

@@ -222,16 +222,24 @@ TEST(Faults, AKillAfterTheFirstTenSecondsResumesFromAnEarlyCheckpoint) {
 }
 
 // 5. `render --partial` of a run that did not complete says so in every output: a "# partial"
-// first line in each CSV, " (partial)" in each figure's title, "partial": true in run.json.
+// first line in each CSV, " (partial)" in each figure's title, " (partial run)" on each frame,
+// "partial": true in run.json.
 TEST(Faults, RenderPartialMarksEveryOutput) {
   const fs::path dir = fresh("render_partial");
   auto stopped =
-      test::run_sedem("run " + kDemo + kSlow + " --set output.figure_formats=png,svg --out " +
+      test::run_sedem("run " + kDemo + kSlow +
+                      " --set output.frames=true --set output.figure_formats=png,svg --out " +
                       dir.string() + " & pid=$!; sleep 3; kill -TERM $pid; wait $pid");
   ASSERT_EQ(stopped.status, 130) << stopped.output;
   expect_refused(test::run_sedem("render --quiet " + dir.string()), {"--partial"});
+  // The frames too: redrawn from the same snapshot, the first differs from the run's own by its
+  // label, which now says "(partial run)".
+  const fs::path frame = dir / "frames/column_000000.png";
+  ASSERT_TRUE(fs::exists(frame));
+  const std::string run_frame = text_of(frame);
   auto r = test::run_sedem("render --partial --quiet " + dir.string());
   ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(text_of(frame), run_frame);
   int csvs = 0, svgs = 0;
   for (const auto& e : fs::recursive_directory_iterator(dir)) {
     const auto ext = e.path().extension();
