@@ -284,9 +284,9 @@ int run_invert(const InvertOptions& o) {
           << ','
           << (curve.bound_upper.empty() ? "" : number(curve.bound_upper_at(curve.diameter[k])))
           << ',' << number(curve.diameter[k] * 1e6) << ','
-          << (curve.open.empty() ? ""
-              : curve.open[k]    ? "0"
-                                 : "1")
+          << (curve.bound_lower.empty()          ? ""
+              : curve.open_at(curve.diameter[k]) ? "0"
+                                                 : "1")
           << '\n';
   });
   const std::string unit = test == Test::hydrometer ? "g_per_l" : "g";
@@ -340,7 +340,7 @@ int run_invert(const InvertOptions& o) {
       j["readings_allow"] = {{"widest_pp", open.width},
                              {"at_diameter_m", open.diameter},
                              {"tolerance", curve.bound_tolerance}};
-    if (!curve.open.empty()) {
+    if (!curve.bound_lower.empty()) {
       nlohmann::json ranges = nlohmann::json::array();
       for (const auto& [from, to] : curve.open_ranges()) ranges.push_back({from, to});
       j["readings_cannot_tell"] = {{"bounds_wider_than_pp", curve.open_width},
@@ -363,8 +363,8 @@ int run_invert(const InvertOptions& o) {
   fig.bound_diameter_m = curve.bound_diameter;
   fig.bound_lower = curve.bound_lower;
   fig.bound_upper = curve.bound_upper;
-  for (std::size_t k = 0; k < curve.open.size(); ++k)
-    if (curve.open[k]) {
+  for (std::size_t k = 0; k < curve.diameter.size(); ++k)
+    if (curve.open_at(curve.diameter[k])) {
       fig.open_diameter_m.push_back(curve.diameter[k]);
       fig.open_percent_finer.push_back(curve.percent_finer[k]);
     }

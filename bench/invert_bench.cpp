@@ -80,15 +80,6 @@ struct Soil {
   std::string label;  // "" : the scene's name
 };
 
-// Diameters midway (in log d) between two neighbouring readings' diameters.
-std::vector<double> midpoints(std::vector<double> d) {
-  std::sort(d.begin(), d.end());
-  std::vector<double> mid;
-  for (std::size_t i = 1; i < d.size(); ++i)
-    if (d[i] > 1.05 * d[i - 1]) mid.push_back(std::sqrt(d[i] * d[i - 1]));
-  return mid;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -247,7 +238,7 @@ int main(int argc, char** argv) {
           o.seed = std::uint64_t(k + 1);
           const auto noisy = invert::invert_readings(
               test_setup(scene), test, recorded(scene, test, c, shift, method).data, o);
-          for (double d : midpoints(noisy.reading_diameter)) {
+          for (double d : noisy.between_readings()) {
             const double truth = true_percent_finer(sample.classes, d);
             if (truth <= 0.5 || truth >= 99.5) continue;
             ++total_between;

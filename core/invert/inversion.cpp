@@ -234,13 +234,21 @@ bool InvertedCurve::open_at(double d) const {
   return !bound_lower.empty() && bound_upper_at(d) - bound_lower_at(d) > open_width;
 }
 
+std::vector<double> InvertedCurve::between_readings() const {
+  std::vector<double> d = reading_diameter;
+  std::sort(d.begin(), d.end());
+  std::vector<double> mid;
+  for (std::size_t i = 1; i < d.size(); ++i)
+    if (d[i] > 1.05 * d[i - 1]) mid.push_back(std::sqrt(d[i] * d[i - 1]));
+  return mid;
+}
+
 std::vector<std::pair<double, double>> InvertedCurve::open_ranges() const {
   std::vector<std::pair<double, double>> ranges;
   bool in_run = false;
-  for (std::size_t k = 0; k < open.size(); ++k) {
-    const double d = diameter[k];
+  for (const double d : diameter) {
     const bool counted =
-        open[k] && d >= resolved_min * (1 - 1e-9) && d <= resolved_max * (1 + 1e-9);
+        open_at(d) && d >= resolved_min * (1 - 1e-9) && d <= resolved_max * (1 + 1e-9);
     if (counted && in_run)
       ranges.back().second = d;
     else if (counted)
@@ -518,14 +526,11 @@ InvertedCurve invert_readings(const TestSetup& setup, Test test,
   // at a knee it is wrong: the band is then what the readings allow. Both edges stay monotone
   // (each is the pointwise min or max of two monotone sequences).
   out.open_width = options.open_width;
-  if (!out.bound_lower.empty()) {
-    for (std::size_t k = 0; k < out.diameter.size(); ++k) {
-      const double d = out.diameter[k];
-      out.open.push_back(out.open_at(d) ? 1 : 0);
-      if (!out.open.back() || out.lower.empty()) continue;
-      out.lower[k] = std::min(out.lower[k], out.bound_lower_at(d));
-      out.upper[k] = std::max(out.upper[k], out.bound_upper_at(d));
-    }
+  for (std::size_t k = 0; k < out.lower.size(); ++k) {  // no band, or no bounds: nothing
+    const double d = out.diameter[k];
+    if (!out.open_at(d)) continue;
+    out.lower[k] = std::min(out.lower[k], out.bound_lower_at(d));
+    out.upper[k] = std::max(out.upper[k], out.bound_upper_at(d));
   }
   return out;
 }

@@ -80,11 +80,10 @@ struct InvertedCurve {
   std::vector<double> bound_tolerance;        // per reading, in its unit
   double resolved_min = 0, resolved_max = 0;  // reading_diameter's extremes
   std::vector<double> reading_diameter;  // where each reading pins the curve, m (model_diameter)
-  // Per node: 1 where the strict bounds are wider than InversionOptions::open_width, i.e. where
-  // any curve the readings allow may lie tens of pp from this one (a knee between two
-  // readings); there the band is the bounds. Empty without bounds.
-  std::vector<std::uint8_t> open;
-  double open_width = 0;  // pp, the options'
+  // Where the strict bounds are wider than this (InversionOptions::open_width, pp) the
+  // readings cannot tell the curve (open_at): any curve they allow may lie tens of pp from this
+  // one (a knee between two readings), and the band there is the bounds.
+  double open_width = 0;
 
   // Linear in log d between nodes; 0 below a decade under the first node, 100 above 4x the
   // last (the finest and coarsest bins' spans).
@@ -103,8 +102,12 @@ struct InvertedCurve {
     double diameter = 0;  // m
   };
   OpenInterval widest_open() const;
-  // Whether the readings cannot tell the curve at `diameter` (bounds wider than open_width).
+  // Whether the readings cannot tell the curve at `diameter` (bounds wider than open_width;
+  // false without bounds).
   bool open_at(double diameter) const;
+  // Midway (in log d) between each two neighbouring readings' diameters more than 5 % apart:
+  // where a knee hides from every reading (to score the band there).
+  std::vector<double> between_readings() const;
   // The runs of open nodes within the resolved diameters, as (smallest, largest) diameter, m.
   std::vector<std::pair<double, double>> open_ranges() const;
 };

@@ -106,14 +106,9 @@ RunEnd Simulation::run(const RunControl& control) {
 void Simulation::run_here(const StepWatch& after_step) {
   for (double t : observers_.times()) {
     if (t < engine_->time()) continue;
-    if (after_step) {
-      // Engine::advance_to's own loop, watched.
-      while (engine_->time() < t) {
-        engine_->step(t);
-        after_step(engine_->time(), engine_->stats());
-      }
-    } else {
-      engine_->advance_to(t);
+    while (engine_->time() < t) {  // Engine::advance_to, each step watched
+      engine_->step(t);
+      if (after_step) after_step(engine_->time(), engine_->stats());
     }
     observers_.show_in_place(engine_->time(), engine_->particles());
     peak_engine_bytes_ = std::max(peak_engine_bytes_, engine_->bytes());

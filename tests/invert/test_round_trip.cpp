@@ -122,15 +122,6 @@ TEST(Pins, FollowTheHinderedFronts) {
 // ones (in log d), where a knee hides from every reading.
 enum class Where { readings, between };
 
-std::vector<double> scored(std::vector<double> d, Where where) {
-  if (where == Where::readings) return d;
-  std::sort(d.begin(), d.end());
-  std::vector<double> mid;
-  for (std::size_t i = 1; i < d.size(); ++i)
-    if (d[i] > 1.05 * d[i - 1]) mid.push_back(std::sqrt(d[i] * d[i - 1]));
-  return mid;
-}
-
 double coverage(const Scene& scene, invert::Test test, int copies, int replicas,
                 Where where = Where::readings, bool bounds = false) {
   const Sample sample = classes_only(scene);
@@ -148,7 +139,7 @@ double coverage(const Scene& scene, invert::Test test, int copies, int replicas,
     o.seed = std::uint64_t(c + 1);
     const auto curve =
         invert_readings(test_setup(scene), test, recorded(scene, sim, test, shift), o);
-    for (double d : scored(curve.reading_diameter, where)) {
+    for (double d : where == Where::readings ? curve.reading_diameter : curve.between_readings()) {
       const double truth = true_percent_finer(sample.classes, d);
       if (truth <= 0.5 || truth >= 99.5) continue;  // the ends say nothing about the band
       ++total;
