@@ -426,8 +426,10 @@ int run_invert(const InvertOptions& o) {
     for (const auto& [from, to] : curve.open_ranges())
       std::printf(
           "the readings cannot tell the curve from %.3g to %.3g um: they allow curves more than "
-          "%.0f pp apart there (%.1f to %.1f %% at %.3g um); the band there is what they allow\n",
+          "%.0f pp apart there (%.1f to %.1f %% at %.3g um, %.1f to %.1f %% at %.3g um); the "
+          "band there is what they allow\n",
           from * 1e6, to * 1e6, curve.open_width, curve.bound_lower_at(from),
+          curve.bound_upper_at(from), from * 1e6, curve.bound_lower_at(to),
           curve.bound_upper_at(to), to * 1e6);
     if (!truth.empty())
       std::printf(
