@@ -192,13 +192,19 @@ TEST(LocalSteps, KeepTheirPromiseWithoutSuspensionContacts) {
   EXPECT_LT(engaged[0] * 10, engaged[1]) << engaged[0] << " " << engaged[1];
 }
 
-// Without suspension contacts a run resumes bit for bit too (free grains hold no box, so the
-// checkpoint holds the members' and the walls' only), and grains still keep off the walls.
-TEST(LocalSteps, WithoutSuspensionContactsResumesBitForBit) {
+// Local steps, Di Felice drag, grains that pass each other and retire below the instruments.
+Scene passing_scene() {
   Scene scene = scene_with("di_felice", "exponential");
   scene.integrator.local_steps = true;
   scene.integrator.retire_below = true;
   scene.forces.suspension_contacts = false;
+  return scene;
+}
+
+// Without suspension contacts a run resumes bit for bit too (free grains hold no box, so the
+// checkpoint holds the members' and the walls' only), and grains still keep off the walls.
+TEST(LocalSteps, WithoutSuspensionContactsResumesBitForBit) {
+  Scene scene = passing_scene();
   const double hw = scene.cylinder.half_width();
   const auto grains = crowd(-hw + 40e-6, hw - 40e-6, 0.2, 0.3);
   const std::string checkpoint =
@@ -220,6 +226,56 @@ TEST(LocalSteps, WithoutSuspensionContactsResumesBitForBit) {
     EXPECT_LE(std::abs(a.x[i]), hw - 0.5 * a.diameter[i] * 0.7) << i;
   }
   EXPECT_GT(first.stats().retired, 0u);  // 20 s: the coarse grains crossed the line
+  std::filesystem::remove(checkpoint);
+}
+
+// Without suspension contacts the syncs are taken lane by lane (one lane a column of voidage
+// cells) on the engine's threads: one thread and two give the same bits, with grains joining
+// the members at the walls and retiring onto the shared bed. A checkpoint taken
+// on two threads resumes on two to the same bits too.
+TEST(LocalSteps, WithoutSuspensionContactsLanesGiveTheSameBitsOnOneThreadOrTwo) {
+  Scene scene = passing_scene();
+  const double hw = scene.cylinder.half_width();
+  auto size = [](int k) { return k % 3 == 0 ? 70e-6 : (k % 3 == 1 ? 25e-6 : 4e-6); };
+  auto grains = test::scattered(4000, -hw + 30e-6, hw - 30e-6, 0.005, 0.3, size, 11, 0.0);
+  for (double side : {-1.0, 1.0}) {  // crowds beside each wall, to join the members
+    const auto wall = test::scattered(300, side * hw - 150e-6, side * hw + 150e-6, 0.31, 0.33, size,
+                                      side > 0 ? 12 : 13, 0.0);
+    for (const auto& g : wall)
+      if (std::abs(g.x) < hw - 40e-6) grains.push_back(g);
+  }
+  const std::string checkpoint =
+      (std::filesystem::temp_directory_path() / "sedem_lanes_test.ckpt").string();
+  scene.integrator.threads = 1;
+  Engine one(engine_setup(scene), sample_of(grains));
+  scene.integrator.threads = 2;
+  Engine two(engine_setup(scene), sample_of(grains));
+  ASSERT_EQ(one.threads(), 1);
+  ASSERT_EQ(two.threads(), 2);
+  for (int k = 1; k <= 20; ++k) {
+    one.advance_to(k);
+    two.advance_to(k);
+    if (k == 10) two.save_checkpoint(checkpoint);
+  }
+  Engine resumed(engine_setup(scene), sample_of(grains));
+  resumed.load_checkpoint(checkpoint);
+  for (int k = 11; k <= 20; ++k) resumed.advance_to(k);
+  for (const Engine* e : {&two, &resumed}) {
+    SCOPED_TRACE(e == &two ? "two threads" : "resumed on two threads");
+    const Particles& a = one.particles();
+    const Particles& b = e->particles();
+    for (std::size_t i = 0; i < grains.size(); ++i) {
+      ASSERT_EQ(a.x[i], b.x[i]) << i;
+      ASSERT_EQ(a.y[i], b.y[i]) << i;
+      ASSERT_EQ(a.vy[i], b.vy[i]) << i;
+    }
+    EXPECT_EQ(e->stats().steps, one.stats().steps);
+    EXPECT_EQ(e->stats().windows, one.stats().windows);
+    EXPECT_EQ(e->stats().particle_steps, one.stats().particle_steps);
+  }
+  EXPECT_GT(one.stats().engaged, 0);  // at the walls
+  EXPECT_GT(one.stats().retired, 100u);
+  EXPECT_EQ(two.local_violation(), "");
   std::filesystem::remove(checkpoint);
 }
 

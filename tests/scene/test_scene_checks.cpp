@@ -178,3 +178,24 @@ TEST(SceneChecks, SuspensionContactsOffNeedsRetirement) {
 
 }  // namespace
 }  // namespace sedem
+
+namespace sedem {
+namespace {
+
+// Coasting windows are counted while each grain is in suspension, not over the whole test: ten
+// million 5 um grains fall the column in about 6 h and take some 3e9 windows of 60 s (counted
+// over 24 h: 1.4e10, refused), while windows of 0.5 s would make 4e11.
+TEST(SceneChecks, CoastingWindowsAreCountedWhileTheGrainsAreInSuspension) {
+  const std::string fine =
+      "[run]\nend_time_s = 86400\n[sample]\nsimulated_count = 10000000\n[sample.grading]\n"
+      "family = \"single\"\ndiameter_um = 5\n";
+  EXPECT_EQ(test::scene_error(fine, {}), "");
+  const std::string e = test::scene_error(fine, {"integrator.max_coast_s=0.5"});
+  EXPECT_NE(e.find("integrator.max_coast_s = 0.5 makes 1e+07 particles take about"),
+            std::string::npos)
+      << e;
+  EXPECT_NE(e.find("allowed for this scene: >= "), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace sedem

@@ -35,6 +35,13 @@ class VoidageGrid {
     return eps < min_voidage_ ? min_voidage_ : (eps > 1.0 ? 1.0 : eps);
   }
   std::size_t cell_count() const { return voidage_.size(); }
+  // The column of cells x lies in, and how many there are: grains in different columns do not
+  // see each other's deposits (local time stepping takes their syncs apart).
+  std::size_t column(double x) const {
+    const long c = long((x + half_width_) * inverse_cell_);
+    return std::size_t(c < 0 ? 0 : (c >= columns_ ? columns_ - 1 : c));
+  }
+  std::size_t columns() const { return std::size_t(columns_); }
   // Local time stepping keeps the grid up to date grain by grain instead of computing it
   // anew each step: a grain's weighted volume (weight * volume, negative to take it out)
   // enters or leaves cell c, whose voidage is then recomputed.
@@ -47,10 +54,9 @@ class VoidageGrid {
  private:
   void refresh(std::size_t c);
   std::size_t cell_of(double x, double y) const {
-    long c = long((x + half_width_) * inverse_cell_), r = long(y * inverse_cell_);
-    c = c < 0 ? 0 : (c >= columns_ ? columns_ - 1 : c);
+    long r = long(y * inverse_cell_);
     r = r < 0 ? 0 : (r >= rows_ ? rows_ - 1 : r);
-    return std::size_t(r * columns_ + c);
+    return std::size_t(r * columns_) + column(x);
   }
   double inverse_cell_ = 1, half_width_ = 0, cell_volume_ = 1, inverse_volume_ = 1,
          min_voidage_ = 0;

@@ -57,11 +57,16 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
   // Below a few thousand particles a step takes microseconds and forking threads costs more.
   if (n < 2048) threads = 1;
   model = force_model(setup, sample.particle_density);
-  // Local time stepping is serial (its work is in syncs taken one at a time, in time order).
-  // It needs no force pass, so not with lubrication.
+  // Local time stepping needs no force pass, so not with lubrication. Its syncs are taken one
+  // at a time, in time order, where grains meet; where the free grains pass each other (no
+  // suspension contacts), each column of voidage cells is a lane of its own, and the lanes go
+  // on the engine's threads (local_lanes.cpp). The members' step is serial.
   local = integrator_method(setup.integrator) == IntegratorMethod::exponential &&
           setup.integrator.local_steps && !model.lubrication;
-  if (local) threads = 1;
+  if (local) {
+    if (!model.contact || !model.suspension_contacts) sync_threads = threads;
+    threads = 1;
+  }
   if (integrator_method(setup.integrator) == IntegratorMethod::explicit_euler)
     model.skin = 0.25;
   else

@@ -13,10 +13,11 @@ namespace sedem {
 
 void LocalStepper::save(std::ostream& out) const {
   write_vector(out, kind_);
-  write_vector(out, flight_);
-  write_vector(out, t0_);
-  write_vector(out, t1_);
-  write_vector(out, deposit_cell_);
+  // The window records go field by field, as the checkpoint has always held them.
+  write_field(out, track_, &Track::flight);
+  write_field(out, track_, &Track::t0);
+  write_field(out, track_, &Track::t1);
+  write_field(out, track_, &Track::deposit_cell);
   write_vector(out, e_.voidage.solid());
   std::vector<Box> boxes(kind_.size());
   std::vector<std::uint8_t> kinds(kind_.size(), BoxRegistry::kNone);
@@ -39,10 +40,11 @@ void LocalStepper::save(std::ostream& out) const {
 
 void LocalStepper::load(std::istream& in) {
   read_vector(in, kind_);
-  read_vector(in, flight_);
-  read_vector(in, t0_);
-  read_vector(in, t1_);
-  read_vector(in, deposit_cell_);
+  track_.assign(kind_.size(), Track{});
+  read_field(in, track_, &Track::flight);
+  read_field(in, track_, &Track::t0);
+  read_field(in, track_, &Track::t1);
+  read_field(in, track_, &Track::deposit_cell);
   std::vector<double> solid(e_.voidage.solid().size());
   read_vector(in, solid);
   e_.voidage.set_solid(solid);
@@ -65,11 +67,12 @@ void LocalStepper::load(std::istream& in) {
   if (land_y_.size() != kind_.size() || bed_.empty())
     throw std::runtime_error("damaged checkpoint: the coarse bed does not fit the sample");
   for (std::size_t id = 0; id < kind_.size(); ++id) {
-    const FreeFlight& f = flight_[id];
-    const bool finite = std::isfinite(f.x + f.y + f.vx + f.vy + f.rate + f.ux + f.uy + t0_[id]) &&
-                        !std::isnan(t1_[id]) && f.rate >= 0;
+    const FreeFlight& f = track_[id].flight;
+    const bool finite =
+        std::isfinite(f.x + f.y + f.vx + f.vy + f.rate + f.ux + f.uy + track_[id].t0) &&
+        !std::isnan(track_[id].t1) && f.rate >= 0;
     if (box_tag(kind_[id]) > box_tag(GrainKind::retired) || !finite ||
-        !std::isfinite(land_y_[id]) || deposit_cell_[id] >= e_.voidage.cell_count() ||
+        !std::isfinite(land_y_[id]) || track_[id].deposit_cell >= e_.voidage.cell_count() ||
         (kinds[id] != BoxRegistry::kNone && kinds[id] > box_tag(GrainKind::settled)))
       throw std::runtime_error("damaged checkpoint: grain " + std::to_string(id) +
                                " has a bad local-step state");
@@ -83,10 +86,12 @@ void LocalStepper::load(std::istream& in) {
     for (std::uint32_t id = 0; id < kind_.size(); ++id)
       if (kinds[id] != BoxRegistry::kNone) boxes_.set(id, boxes[id], kinds[id]);
   }
-  syncs_.clear();
+  // A coasting grain's lane is the column it was synced in, where its window starts.
+  for (Lane& lane : lanes_) lane.syncs.clear();
   for (std::uint32_t id = 0; id < kind_.size(); ++id)
-    if (kind_[id] == GrainKind::coasting) syncs_.emplace_back(t1_[id], id);
-  std::make_heap(syncs_.begin(), syncs_.end(), kLater);
+    if (kind_[id] == GrainKind::coasting)
+      lanes_[lane_of(track_[id].flight.x)].syncs.emplace_back(track_[id].t1, id);
+  for (Lane& lane : lanes_) std::make_heap(lane.syncs.begin(), lane.syncs.end(), kLater);
   member_.assign(kind_.size(), kNoMember);
   index_members();
   settled_ = std::size_t(std::count(kind_.begin(), kind_.end(), GrainKind::settled));
@@ -105,7 +110,7 @@ std::string LocalStepper::violation() const {
   auto where = [&](std::uint32_t id) {
     if (kind_[id] == GrainKind::coasting) return coasting_at(id, e_.time);
     if (kind_[id] == GrainKind::settled)
-      return FreeFlight::Point{flight_[id].x, flight_[id].y, 0, 0};
+      return FreeFlight::Point{track_[id].flight.x, track_[id].flight.y, 0, 0};
     if (kind_[id] == GrainKind::retired) return retired_at(id, e_.time);
     const std::size_t k = member_[id];
     return FreeFlight::Point{e_.state.x[k], e_.state.y[k], 0, 0};
@@ -114,8 +119,8 @@ std::string LocalStepper::violation() const {
     return "grain " + std::to_string(id) + " (" + name_of(kind_[id]) + ")";
   };
   for (std::uint32_t id = 0; id < n; ++id) {
-    if (kind_[id] == GrainKind::coasting && t1_[id] < e_.time)
-      return name(id) + ": its window ended at " + std::to_string(t1_[id]) + " s, before " +
+    if (kind_[id] == GrainKind::coasting && track_[id].t1 < e_.time)
+      return name(id) + ": its window ended at " + std::to_string(track_[id].t1) + " s, before " +
              std::to_string(e_.time) + " s";
     if (kind_[id] == GrainKind::retired) {
       if (boxes_.has(id)) return name(id) + " holds a box";
@@ -133,8 +138,8 @@ std::string LocalStepper::violation() const {
     std::string found;
     boxes_.overlapping(boxes_.box(id), id, [&](std::uint32_t j) {
       const GrainKind a = kind_[id], b = kind_[j];
-      const bool ahead = (a == GrainKind::coasting && t0_[id] > e_.time) ||
-                         (b == GrainKind::coasting && t0_[j] > e_.time);
+      const bool ahead = (a == GrainKind::coasting && track_[id].t0 > e_.time) ||
+                         (b == GrainKind::coasting && track_[j].t0 > e_.time);
       const bool passing = passes(id) && passes(j);
       const bool handled = ahead || passing ||
                            (a != GrainKind::coasting && b != GrainKind::coasting &&

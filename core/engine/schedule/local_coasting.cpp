@@ -46,6 +46,7 @@ bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p,
   const FreeFlight f = flight_of(id, p);
   const double r = 0.5 * e_.sample.particles.diameter[id], pad = r * (1 + kSkin);
   const double hw = e_.model.half_width;
+  Lane& lane = lanes_[lane_of(p.x)];
   double window = e_.setup.integrator.max_coast;
   const double gap = std::hypot(f.vx - f.ux, f.vy - f.uy), terminal = std::hypot(f.ux, f.uy);
   // Di Felice drag depends on the speed: far from its terminal velocity a grain's drag is
@@ -58,23 +59,13 @@ bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p,
   };
   auto take = [&](double w) {
     if (!commit) return true;
-    flight_[id] = f;
-    t0_[id] = t;
-    t1_[id] = t + w;
-    kind_[id] = GrainKind::coasting;
+    track_[id] = {f, t, t + w, track_[id].deposit_cell};
+    // Sixty-four grains share a line of kind_, and lanes on two threads sync grains of
+    // neighbouring ids: a grain already coasting is not written again.
+    if (kind_[id] != GrainKind::coasting) kind_[id] = GrainKind::coasting;
     if (e_.model.contact) hold_coasting_box(id, box(w));
-    syncs_.emplace_back(t + w, id);
-    std::push_heap(syncs_.begin(), syncs_.end(), kLater);
-    // Windows cut short (a grain synced early, engaged or retired) leave their entries behind
-    // until their time comes: past 1.25 times the grains, the stale ones go (the heap pops in the
-    // same order either way: entries compare by time, then id).
-    if (syncs_.size() > kind_.size() + kind_.size() / 4 + 1024) {
-      std::erase_if(syncs_, [&](const Sync& e) {
-        return kind_[e.second] != GrainKind::coasting || t1_[e.second] != e.first;
-      });
-      std::make_heap(syncs_.begin(), syncs_.end(), kLater);
-    }
-    ++e_.stats.windows;
+    push_sync(lane, t + w, id);
+    ++lane.windows;
     return true;
   };
   if (!e_.model.contact) return take(window);
@@ -88,15 +79,15 @@ bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p,
   if (speed > 0) window = std::min(window, travel_ / speed);
   const double shortest =
       speed > 0 ? std::min(window, e_.setup.integrator.crossing_fraction * r / speed) : window;
-  near_.clear();
+  lane.near.clear();
   boxes_.overlapping(box(window), id, [&](std::uint32_t j) {
-    if (!passes(j)) near_.push_back(j);
+    if (!passes(j)) lane.near.push_back(j);
   });
   for (double w = window; w >= shortest; w *= 0.5) {
     const Box b = box(w);
     if (b.x0 <= -hw || b.x1 >= hw || b.y0 <= 0) continue;
     bool clear = true;
-    for (std::uint32_t j : near_)
+    for (std::uint32_t j : lane.near)
       if (b.overlaps(boxes_.box(j))) {
         clear = false;
         break;
@@ -123,7 +114,7 @@ bool LocalStepper::make_room(std::uint32_t id, double t, const FreeFlight::Point
   bool movable = true;
   boxes_.overlapping(needed, id, [&](std::uint32_t j) {
     if (!movable) return;
-    if (kind_[j] != GrainKind::coasting || t0_[j] > t || t1_[j] <= t) {
+    if (kind_[j] != GrainKind::coasting || track_[j].t0 > t || track_[j].t1 <= t) {
       movable = false;
       return;
     }
@@ -136,13 +127,13 @@ bool LocalStepper::make_room(std::uint32_t id, double t, const FreeFlight::Point
   std::sort(room_.begin(), room_.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
   for (Room& m : room_) {
     m.before = boxes_.box(m.id);
-    m.t0 = t0_[m.id];
+    m.t0 = track_[m.id].t0;
     const double pad = 0.5 * s.diameter[m.id] * (1 + kSkin);
     hold_coasting_box(m.id, Box{m.at.x - pad, m.at.x + pad, m.at.y - pad, m.at.y + pad});
-    t1_[m.id] = HUGE_VAL;  // its heap entry is stale
+    track_[m.id].t1 = HUGE_VAL;  // its heap entry is stale
   }
   const Box before = boxes_.box(id);
-  const double t0_before = t0_[id];
+  const double t0_before = track_[id].t0;
   const bool coasting = coast(id, t, p, true);
   if (coasting) note_ahead(id, t, before, t0_before);
   for (const Room& m : room_) {
@@ -184,8 +175,8 @@ void LocalStepper::note_ahead(std::uint32_t id, double t, const Box& before, dou
 // its terminal velocity by e^(dt/tau); that far back (less than a member step, so less than a
 // crossing time) the grain is at its terminal velocity to round-off.
 FreeFlight::Point LocalStepper::coasting_at(std::uint32_t id, double t) const {
-  const FreeFlight& f = flight_[id];
-  const double s = t - t0_[id];
+  const FreeFlight& f = track_[id].flight;
+  const double s = t - track_[id].t0;
   if (s >= 0) return f.at(s);
   return {f.x + s * f.vx, f.y + s * f.vy, f.vx, f.vy};
 }
@@ -194,7 +185,7 @@ FreeFlight::Point LocalStepper::coasting_at(std::uint32_t id, double t) const {
 // of it now: synced now, at the members' time, it may take a new window clear of `reach`.
 // True if it did (or retired); false: it is to join the members, and nothing was changed.
 bool LocalStepper::resync_clear_of(std::uint32_t j, const Box& reach) {
-  if (!e_.model.contact || t0_[j] > e_.time || t1_[j] <= e_.time) return false;
+  if (!e_.model.contact || track_[j].t0 > e_.time || track_[j].t1 <= e_.time) return false;
   const FreeFlight::Point q = coasting_at(j, e_.time);
   const double r = 0.5 * e_.sample.particles.diameter[j], pad = r * (1 + kSkin);
   const Box disc{q.x - pad, q.x + pad, q.y - pad, q.y + pad};

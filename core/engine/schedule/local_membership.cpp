@@ -56,7 +56,7 @@ void LocalStepper::wake_around(std::uint32_t first) {
       if (kind_[j] == GrainKind::coasting) {
         if (!resync_clear_of(j, reach)) engage(j, coasting_at(j, e_.time), false);
       } else {
-        const FreeFlight& f = flight_[j];
+        const FreeFlight& f = track_[j].flight;
         --settled_;
         engage(j, FreeFlight::Point{f.x, f.y, 0, 0}, true);
       }
@@ -66,8 +66,8 @@ void LocalStepper::wake_around(std::uint32_t first) {
 
 void LocalStepper::anchor(std::size_t k) {
   const std::uint32_t id = e_.state.origin[k];
-  flight_[id].x = e_.state.x[k];
-  flight_[id].y = e_.state.y[k];
+  track_[id].flight.x = e_.state.x[k];
+  track_[id].flight.y = e_.state.y[k];
   if (e_.model.contact)
     boxes_.set(id, member_box(k),
                box_tag(e_.state.frozen[k] ? GrainKind::frozen : GrainKind::moving));
@@ -134,7 +134,7 @@ void LocalStepper::settle_members() {
     });
     if (reachable) continue;
     const std::size_t k = member_[id];
-    flight_[id] = FreeFlight{e_.state.x[k], e_.state.y[k], 0, 0, 0, 0, 0};
+    track_[id].flight = FreeFlight{e_.state.x[k], e_.state.y[k], 0, 0, 0, 0, 0};
     kind_[id] = GrainKind::settled;
     ++settled_;
     boxes_.set(id, boxes_.box(id), box_tag(GrainKind::settled));

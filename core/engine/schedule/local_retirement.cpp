@@ -19,22 +19,22 @@ void LocalStepper::retire(std::uint32_t id, double t, const FreeFlight::Point& p
     if (k >= 0 && k < columns && bed_[std::size_t(k)] < bed_[std::size_t(to)]) to = k;
   const double land = std::min(p.y, bed_[std::size_t(to)] + r);
   bed_[std::size_t(to)] += std::numbers::pi * r * r / (bed_column_ * kBedPacking);
-  flight_[id] = flight_of(id, p);
-  t0_[id] = t;
+  track_[id].flight = flight_of(id, p);
+  track_[id].t0 = t;
   // A retired grain has no window (its heap entry, if any, is stale): t1_ holds the x of its
   // place on the bed.
-  t1_[id] = std::clamp(p.x + double(to - c) * bed_column_, -hw + r, hw - r);
+  track_[id].t1 = std::clamp(p.x + double(to - c) * bed_column_, -hw + r, hw - r);
   land_y_[id] = land;
   kind_[id] = GrainKind::retired;
   if (e_.model.contact) boxes_.clear(id);
-  move_deposit(id, t1_[id], land);
+  move_deposit(id, track_[id].t1, land);
   ++e_.stats.retired;
 }
 
 FreeFlight::Point LocalStepper::retired_at(std::uint32_t id, double t) const {
-  const FreeFlight::Point q = flight_[id].at(std::max(0.0, t - t0_[id]));
+  const FreeFlight::Point q = track_[id].flight.at(std::max(0.0, t - track_[id].t0));
   if (q.y > land_y_[id]) return q;
-  return {t1_[id], land_y_[id], 0, 0};
+  return {track_[id].t1, land_y_[id], 0, 0};
 }
 
 // Members (moving or frozen) whose disc is wholly below the retirement height retire.

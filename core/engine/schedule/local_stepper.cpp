@@ -16,12 +16,12 @@ LocalStepper::LocalStepper(EngineParts& parts) : e_(parts) {
   const Particles& s = e_.sample.particles;
   const std::size_t n = s.size();
   kind_.assign(n, GrainKind::coasting);
-  flight_.assign(n, FreeFlight{});
-  t0_.assign(n, 0.0);
-  t1_.assign(n, 0.0);
+  track_.assign(n, Track{});
   member_.assign(n, kNoMember);
-  deposit_cell_.assign(n, 0);
-  syncs_.clear();
+  // Lanes apart where the free grains pass each other (local_lanes.cpp).
+  const bool apart = !e_.model.contact || !e_.model.suspension_contacts;
+  lanes_.assign(apart ? e_.voidage.columns() : 1, Lane{});
+  lane_threads_ = apart ? e_.sync_threads : 1;
   const Cylinder& cyl = e_.setup.cylinder;
   double dmax = 0;
   for (double d : s.diameter) dmax = std::max(dmax, d);
@@ -44,13 +44,13 @@ LocalStepper::LocalStepper(EngineParts& parts) : e_(parts) {
     e_.voidage.compute(n, e_.state.x.data(), e_.state.y.data(), e_.state.diameter.data(),
                        e_.state.weight.data());
     for (std::uint32_t id = 0; id < n; ++id)
-      deposit_cell_[id] = std::uint32_t(e_.voidage.cell(e_.state.x[id], e_.state.y[id]));
+      track_[id].deposit_cell = std::uint32_t(e_.voidage.cell(e_.state.x[id], e_.state.y[id]));
   }
   // Every grain first holds its disc, as if settled, so that the first windows see them all.
   std::vector<FreeFlight::Point> start(n);
   for (std::uint32_t id = 0; id < n; ++id) {
     start[id] = {e_.state.x[id], e_.state.y[id], e_.state.vx[id], e_.state.vy[id]};
-    flight_[id] = FreeFlight{start[id].x, start[id].y, start[id].vx, start[id].vy, 0, 0, 0};
+    track_[id].flight = FreeFlight{start[id].x, start[id].y, start[id].vx, start[id].vy, 0, 0, 0};
     const double pad = 0.5 * s.diameter[id] * (1 + kSkin);
     if (e_.model.contact)
       hold_coasting_box(
@@ -76,6 +76,7 @@ LocalStepper::LocalStepper(EngineParts& parts) : e_(parts) {
   members_changed_ = false;
   e_.integrator->refresh_step(e_.state);
   e_.stats.members = e_.state.size();
+  count_lanes();
 }
 
 void LocalStepper::step(double limit) {
@@ -87,6 +88,8 @@ void LocalStepper::step(double limit) {
   std::size_t moving = count_moving();
   double dt = moving ? e_.integrator->next_step(e_.facts) : e_.setup.integrator.max_step;
   double target = e_.time + dt >= limit ? limit : e_.time + dt;
+  const bool apart = lanes_.size() > 1;
+  if (apart && !moving) target = idle_horizon(target);
   // Syncs due within the step, in time order. A grain that cannot coast on joins the members
   // at their time, before they step, where its last window put it then (coasting_at). So no
   // member step is cut short by a sync (steps of a few ns would turn the projection's
@@ -94,22 +97,24 @@ void LocalStepper::step(double limit) {
   ahead_.clear();
   std::size_t idle_syncs = 0;
   double last_sync = e_.time;
+  std::vector<Sync>& syncs = lanes_[0].syncs;
   for (;;) {
     failed_.clear();
-    while (!syncs_.empty() && syncs_.front().first <= target) {
+    if (apart) take_lanes(target);
+    while (!apart && !syncs.empty() && syncs.front().first <= target) {
       // Nothing moves between syncs, so ending the step between two of them changes nothing
       // but where a stop may come (syncs at one time are all taken: none ends unlooked-at).
-      if (!moving && idle_syncs >= kIdleStepSyncs && syncs_.front().first > last_sync) {
+      if (!moving && idle_syncs >= kIdleStepSyncs && syncs.front().first > last_sync) {
         target = last_sync;
         break;
       }
-      const auto [t, id] = syncs_.front();
+      const auto [t, id] = syncs.front();
       last_sync = t;
       ++idle_syncs;
-      std::pop_heap(syncs_.begin(), syncs_.end(), kLater);
-      syncs_.pop_back();
-      if (kind_[id] != GrainKind::coasting || t1_[id] != t) continue;  // engaged since: stale
-      const FreeFlight::Point p = flight_[id].at(t - t0_[id]);
+      std::pop_heap(syncs.begin(), syncs.end(), kLater);
+      syncs.pop_back();
+      if (kind_[id] != GrainKind::coasting || track_[id].t1 != t) continue;  // engaged since: stale
+      const FreeFlight::Point p = track_[id].flight.at(t - track_[id].t0);
       if (!std::isfinite(p.x + p.y + p.vx + p.vy))
         throw InstabilityError(e_.sample.particles.id[id], t, "position", p.x);
       e_.stats.particle_steps += 1;
@@ -119,7 +124,7 @@ void LocalStepper::step(double limit) {
       }
       move_deposit(id, p.x, p.y);
       const Box before = e_.model.contact ? boxes_.box(id) : Box{};
-      const double t0_before = t0_[id];
+      const double t0_before = track_[id].t0;
       if (coast(id, t, p, true)) {
         note_ahead(id, t, before, t0_before);
         continue;
@@ -128,7 +133,7 @@ void LocalStepper::step(double limit) {
         if (failed_.empty()) continue;
         break;  // a grain it moved could not coast: the members' step is chosen again with it
       }
-      t1_[id] = HUGE_VAL;  // its heap entry, if any, is stale
+      track_[id].t1 = HUGE_VAL;  // its heap entry, if any, is stale
       failed_.push_back(id);
       break;  // the members' step is chosen again with it
     }
@@ -137,7 +142,7 @@ void LocalStepper::step(double limit) {
     // their box covers their path from the members' time on, the old window's part included,
     // until their next sync. (Taken before the new members' boxes look for what they reach.)
     for (Ahead& a : ahead_) {
-      if (a.widened || kind_[a.id] != GrainKind::coasting || t0_[a.id] != a.time) continue;
+      if (a.widened || kind_[a.id] != GrainKind::coasting || track_[a.id].t0 != a.time) continue;
       hold_coasting_box(a.id, a.after.merged(a.before));
       a.widened = true;
     }
@@ -158,7 +163,7 @@ void LocalStepper::step(double limit) {
   // members have passed their sync (until then a grain synced after them may be where their
   // old box was, which is what the widened boxes allow).
   for (const Ahead& a : ahead_)
-    if (a.widened && kind_[a.id] == GrainKind::coasting && t0_[a.id] == a.time) {
+    if (a.widened && kind_[a.id] == GrainKind::coasting && track_[a.id].t0 == a.time) {
       if (a.time <= target)
         hold_coasting_box(a.id, a.after);
       else
@@ -189,7 +194,7 @@ void LocalStepper::step(double limit) {
   if (!widened_.empty()) {
     std::size_t kept = 0;
     for (const Ahead& a : widened_) {
-      if (kind_[a.id] != GrainKind::coasting || t0_[a.id] != a.time)
+      if (kind_[a.id] != GrainKind::coasting || track_[a.id].t0 != a.time)
         continue;  // synced again since
       if (a.time <= e_.time)
         hold_coasting_box(a.id, a.after);
@@ -207,7 +212,8 @@ void LocalStepper::step(double limit) {
     for (std::size_t k = 0; k < e_.state.size(); ++k) {
       if (e_.state.frozen[k]) continue;
       const std::uint32_t id = e_.state.origin[k];
-      const double moved = std::hypot(e_.state.x[k] - flight_[id].x, e_.state.y[k] - flight_[id].y);
+      const double moved =
+          std::hypot(e_.state.x[k] - track_[id].flight.x, e_.state.y[k] - track_[id].flight.y);
       if (moved > kReanchor * 0.5 * e_.state.diameter[k]) wake_.push_back(id);
     }
     wake_around(kNoMember);
@@ -226,26 +232,28 @@ void LocalStepper::step(double limit) {
     members_changed_ = false;
   }
   e_.stats.members = e_.state.size();
+  count_lanes();
 }
 
 void LocalStepper::move_deposit(std::uint32_t id, double x, double y) {
   if (e_.model.drag != DragLaw::di_felice) return;
   const std::size_t c = e_.voidage.cell(x, y);
-  if (c == deposit_cell_[id]) return;
+  if (c == track_[id].deposit_cell) return;
   const double d = e_.sample.particles.diameter[id];
   const double volume = e_.sample.particles.weight[id] * e_.model.volume(d);
-  e_.voidage.deposit(deposit_cell_[id], -volume);
+  e_.voidage.deposit(track_[id].deposit_cell, -volume);
   e_.voidage.deposit(c, volume);
-  deposit_cell_[id] = std::uint32_t(c);
+  track_[id].deposit_cell = std::uint32_t(c);
 }
 
 void LocalStepper::write_free_grains(Particles& p) const {
   for (std::uint32_t id = 0; id < kind_.size(); ++id) {
     if (is_member(kind_[id])) continue;
-    const FreeFlight::Point q = kind_[id] == GrainKind::coasting ? coasting_at(id, e_.time)
-                                : kind_[id] == GrainKind::retired
-                                    ? retired_at(id, e_.time)
-                                    : FreeFlight::Point{flight_[id].x, flight_[id].y, 0, 0};
+    const FreeFlight::Point q =
+        kind_[id] == GrainKind::coasting ? coasting_at(id, e_.time)
+        : kind_[id] == GrainKind::retired
+            ? retired_at(id, e_.time)
+            : FreeFlight::Point{track_[id].flight.x, track_[id].flight.y, 0, 0};
     p.x[id] = q.x;
     p.y[id] = q.y;
     p.vx[id] = q.vx;
@@ -256,9 +264,11 @@ void LocalStepper::write_free_grains(Particles& p) const {
 
 std::size_t LocalStepper::bytes() const {
   auto cap = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  return cap(kind_) + cap(flight_) + cap(t0_) + cap(t1_) + cap(member_) + cap(deposit_cell_) +
-         cap(syncs_) + cap(near_) + cap(wake_) + boxes_.bytes() + cap(land_y_) + cap(bed_) +
-         cap(ahead_slot_) + cap(ahead_) + cap(widened_);
+  std::size_t lane_bytes = cap(lanes_);
+  for (const Lane& l : lanes_)
+    lane_bytes += cap(l.syncs) + cap(l.near) + cap(l.failed) + cap(l.leaving);
+  return cap(kind_) + cap(track_) + cap(member_) + cap(wake_) + boxes_.bytes() + cap(land_y_) +
+         cap(bed_) + cap(ahead_slot_) + cap(ahead_) + cap(widened_) + cap(leaving_) + lane_bytes;
 }
 
 }  // namespace sedem

@@ -26,8 +26,11 @@
 // from a heap; a step of the members ends early at a sync that engages, so that every grain
 // joins the common step at the members' time. The voidage grid is kept up to date grain by
 // grain (each sync or member step moves the grain's deposit when it changes cell), instead of
-// being computed anew each step. The scheme is serial: its work is in syncs of O(log n) each,
-// taken in one order, so a run is the same whatever the thread count.
+// being computed anew each step. Where grains meet, the syncs are taken one at a time, in time
+// order. Where the free grains pass each other (no suspension contacts), a grain's sync depends
+// only on the walls, the bed and the voidage of its own column of cells: each column is then a
+// *lane* with its own syncs, and the lanes are taken on the engine's threads, each in its own
+// time order (local_lanes.cpp). Either way a run is the same whatever the thread count.
 //
 // Below the lowest instrument (integrator.retire_below_instruments) a grain *retires*: nothing
 // there can rise back into an instrument's reach, so it leaves the dynamics and falls freely
@@ -35,10 +38,12 @@
 // that land in it at a packing of kBedPacking), where it is drawn without contacts.
 //
 // The stepper is split by job: local_stepper.cpp (start, the step, the voidage deposits),
-// local_coasting.cpp (windows and syncs), local_membership.cpp (engage, release, settle),
+// local_coasting.cpp (windows and syncs), local_lanes.cpp (syncs lane by lane, on threads),
+// local_membership.cpp (engage, release, settle),
 // local_retirement.cpp (the coarse bed), local_checkpoint.cpp (its state in checkpoints, and
 // the scheme's promise checked for tests).
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -99,6 +104,32 @@ class LocalStepper {
   // windows (integrator.max_coast_s) one max_step_s could hold 1e8 syncs and minutes of work.
   static constexpr std::size_t kIdleStepSyncs = 1 << 16;
 
+  // The syncs of one lane: a column of voidage cells where the free grains pass each other,
+  // every grain where they meet (local_lanes.cpp).
+  struct Lane {
+    std::vector<Sync> syncs;            // min-heap of (t1, id)
+    std::size_t clean_at = 1024;        // heap size past which its stale entries go
+    std::vector<std::uint32_t> near;    // scratch of coast
+    std::vector<std::uint32_t> failed;  // could not coast on: to join the members
+    struct Leaving {
+      double t;
+      std::uint32_t id;
+      FreeFlight::Point at;
+    };
+    std::vector<Leaving> leaving;  // retiring, or into another lane's column: taken after
+    double particle_steps = 0;
+    std::int64_t windows = 0;
+    std::size_t taken = 0;       // syncs in this round
+    double blown_at = HUGE_VAL;  // the first sync that found a non-finite trajectory
+    std::uint32_t blown_id = 0;
+    double blown_x = 0;
+  };
+  std::size_t lane_of(double x) const { return lanes_.size() == 1 ? 0 : e_.voidage.column(x); }
+  void push_sync(Lane& lane, double t, std::uint32_t id);
+  void take_lane(std::size_t l, double target);
+  void take_lanes(double target);
+  double idle_horizon(double target);
+  void count_lanes();
   // Coasting and syncs (local_coasting.cpp).
   bool coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit,
              Box* needed = nullptr);
@@ -126,18 +157,30 @@ class LocalStepper {
   void move_deposit(std::uint32_t id, double x, double y);
 
   EngineParts& e_;
-  // Each grain is coasting (on its exact free trajectory `flight_` from t0_ until t1_), a
+  // Each grain is coasting (on its exact free trajectory `flight` from t0 until t1), a
   // member of the common step (in the state, at index member_), or settled (a frozen grain no
   // member can reach, kept out of the state), or retired (below every instrument, falling on
-  // flight_ from t0_ onto the coarse bed, to rest at (t1_, land_y_)). See GrainKind.
+  // flight from t0 onto the coarse bed, to rest at (t1, land_y_)). See GrainKind.
   bool members_changed_ = false;
   std::vector<GrainKind> kind_;
-  std::vector<FreeFlight> flight_;  // coasting: from t0_; members: anchor of their box in x, y
-  std::vector<double> t0_, t1_;
-  std::vector<std::uint32_t> member_, deposit_cell_;
-  std::vector<Sync> syncs_;  // min-heap of (t1_, id)
+  // A grain's window in one record: a sync reads and writes all of it, and grains of one lane
+  // are scattered among the others' ids (in separate arrays the threads taking two lanes wrote
+  // into the same cache lines at every sync).
+  struct Track {
+    FreeFlight flight;  // coasting: from t0; members: anchor of their box in x, y
+    double t0 = 0, t1 = 0;
+    std::uint32_t deposit_cell = 0;  // the voidage cell holding its weight
+  };
+  std::vector<Track> track_;
+  std::vector<std::uint32_t> member_;
+  std::vector<Lane> lanes_;
+  int lane_threads_ = 1;
+  std::size_t recent_syncs_ = 0;  // taken in the last round of every lane
+  // Syncs in a round from which the lanes go on threads (bench: sedem_bench_scale --threads).
+  static constexpr std::size_t kThreadedSyncs = 64;
+  std::vector<Lane::Leaving> leaving_;  // scratch of take_lanes
   BoxRegistry boxes_;
-  std::vector<std::uint32_t> near_, wake_, failed_;  // scratch
+  std::vector<std::uint32_t> wake_, failed_;  // scratch
   struct Ahead {
     std::uint32_t id;
     double time;
