@@ -40,6 +40,7 @@ void Simulation::resume(const std::string& checkpoint) {
 }
 
 RunEnd Simulation::run(const RunControl& control) {
+  if (control.capacity == 0) return run_in_place(control);
   using clock = std::chrono::steady_clock;
   const double end = scene_.end_time, from = engine_->time();
   std::vector<double> times = merge_times({observers_.times(), {end}});
@@ -100,6 +101,63 @@ RunEnd Simulation::run(const RunControl& control) {
     result.engine_error = runner.error();
   else
     result.completed = runner.state() == EngineRunner::State::finished && !stopped;
+  return result;
+}
+
+RunEnd Simulation::run_in_place(const RunControl& control) {
+  using clock = std::chrono::steady_clock;
+  const double end = scene_.end_time, from = engine_->time();
+  std::vector<double> times = merge_times({observers_.times(), {end}});
+  std::erase_if(times, [&](double t) { return t > end * (1 + 1e-12) || t < from; });
+  const bool periodic = control.checkpoint && control.checkpoint_every > 0;
+  const auto every = std::chrono::duration<double>(control.checkpoint_every);
+  const auto first = std::chrono::duration<double>(
+      control.first_checkpoint > 0 ? std::min(control.first_checkpoint, control.checkpoint_every)
+                                   : control.checkpoint_every);
+  auto report = [&] {
+    if (control.progress) control.progress(engine_->time(), engine_->stats().particle_steps);
+  };
+  RunEnd result;
+  // A stop asked before the run is seen before its first step.
+  auto last_checkpoint = clock::now(), last_report = clock::time_point{};
+  bool first_done = false;
+  for (double t : times) {
+    while (engine_->time() < t) {
+      const auto now = clock::now();
+      if (now - last_report >= control.poll) {
+        report();
+        last_report = now;
+        if (control.stop_requested && control.stop_requested()) return result;
+      }
+      // Every observer has seen every time before the engine's: a resumed run replays those
+      // and goes on from the saved state.
+      if (periodic && now - last_checkpoint >= (first_done ? every : first)) {
+        try {
+          control.checkpoint([&](const std::string& path) { engine_->save_checkpoint(path); });
+        } catch (const std::exception& e) {
+          if (control.warning)
+            control.warning(std::string("the periodic checkpoint failed: ") + e.what());
+        }
+        last_checkpoint = clock::now();
+        first_done = true;
+      }
+      try {
+        engine_->step(t);
+      } catch (const std::exception& e) {  // an instability, memory: the run ends here
+        result.engine_error = e.what();
+        report();
+        return result;
+      }
+    }
+    // An observer's exception ends the run and goes to the caller, the engine at rest.
+    observers_.show_in_place(engine_->time(), engine_->particles());
+    if (control.stop_requested && engine_->time() < end && control.stop_requested()) {
+      report();
+      return result;
+    }
+  }
+  report();
+  result.completed = true;
   return result;
 }
 

@@ -60,41 +60,53 @@ TEST(Simulation, RunShowsEachObserverItsTimesInOrderAndGoesOnToTheEnd) {
   EXPECT_DOUBLE_EQ(simulation.time(), 100.0);  // the scene's end, wanted or not
 }
 
+// With snapshots (the engine on its own thread) or none (the engine waits while the observers
+// look at its particles in place, RunControl::capacity = 0).
 TEST(Simulation, EngineOnItsOwnThreadReadsWhatTheCallersThreadReads) {
   const Scene scene = small_scene();
-  Simulation threaded(scene);
-  InstrumentObserver instruments(test_setup(scene), threaded.sample());
-  threaded.watch(instruments);
-  ASSERT_TRUE(threaded.run().completed);
   const SimulationRun here = simulate(scene, build_sample(sample_setup(scene)));
-  const auto a = dem_percent(instruments.results()), b = dem_percent(here.results);
-  ASSERT_FALSE(a.empty());
-  EXPECT_EQ(a, b);
-  EXPECT_EQ(threaded.stats().steps, here.stats.steps);
+  for (std::size_t capacity : {2, 0}) {
+    Simulation threaded(scene);
+    InstrumentObserver instruments(test_setup(scene), threaded.sample());
+    threaded.watch(instruments);
+    RunControl control;
+    control.capacity = capacity;
+    ASSERT_TRUE(threaded.run(control).completed);
+    const auto a = dem_percent(instruments.results()), b = dem_percent(here.results);
+    ASSERT_FALSE(a.empty());
+    EXPECT_EQ(a, b) << capacity;
+    EXPECT_EQ(threaded.stats().steps, here.stats.steps) << capacity;
+  }
 }
 
 TEST(Simulation, StopsWhenAskedAndShowsWhatWasComputed) {
   const Scene scene = small_scene();
-  Simulation simulation(scene);
-  TimeLog log({10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110});
-  simulation.watch(log);
-  RunControl control;
-  control.capacity = 1;
-  control.poll = std::chrono::milliseconds(1);
-  // Asked before the first snapshot is taken: the engine, one snapshot ahead at most, waits
-  // for room in the queue and cannot reach the end.
-  control.stop_requested = [] { return true; };
-  const RunEnd end = simulation.run(control);
-  EXPECT_FALSE(end.completed);
-  EXPECT_TRUE(end.engine_error.empty());
-  EXPECT_LE(log.seen.size(), 2u);
-  EXPECT_LT(simulation.time(), 120.0);
-  for (std::size_t k = 1; k < log.seen.size(); ++k) EXPECT_LT(log.seen[k - 1], log.seen[k]);
+  for (std::size_t capacity : {1, 0}) {
+    Simulation simulation(scene);
+    TimeLog log({10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110});
+    simulation.watch(log);
+    RunControl control;
+    control.capacity = capacity;
+    control.poll = std::chrono::milliseconds(1);
+    // Asked before the first snapshot is taken: the engine, one snapshot ahead at most, waits
+    // for room in the queue and cannot reach the end; with none, it stops before its first step.
+    control.stop_requested = [] { return true; };
+    const RunEnd end = simulation.run(control);
+    EXPECT_FALSE(end.completed);
+    EXPECT_TRUE(end.engine_error.empty());
+    EXPECT_LE(log.seen.size(), capacity == 0 ? 0u : 2u);
+    EXPECT_LT(simulation.time(), 120.0);
+    for (std::size_t k = 1; k < log.seen.size(); ++k) EXPECT_LT(log.seen[k - 1], log.seen[k]);
+  }
 }
 
-TEST(Simulation, ResumedFromItsCheckpointReadsWhatAStraightRunReads) {
+// The first leg with snapshots, or with none.
+class ResumedFromItsCheckpoint : public ::testing::TestWithParam<std::size_t> {};
+
+TEST_P(ResumedFromItsCheckpoint, ReadsWhatAStraightRunReads) {
   const Scene scene = small_scene();
-  const auto dir = std::filesystem::path(SEDEM_TEST_OUTPUT) / "simulation_resume";
+  const auto dir =
+      std::filesystem::path(SEDEM_TEST_OUTPUT) / ("simulation_resume" + std::to_string(GetParam()));
   std::filesystem::create_directories(dir);
   const std::string checkpoint = (dir / "run.checkpoint").string();
 
@@ -118,7 +130,7 @@ TEST(Simulation, ResumedFromItsCheckpointReadsWhatAStraightRunReads) {
     first.watch(instruments);
     first.watch(keeper);
     RunControl control;
-    control.capacity = 1;
+    control.capacity = GetParam();
     control.poll = std::chrono::milliseconds(1);
     control.stop_requested = [&] { return !saved.empty() && saved.back().time >= 60; };
     ASSERT_FALSE(first.run(control).completed);
@@ -140,27 +152,32 @@ TEST(Simulation, ResumedFromItsCheckpointReadsWhatAStraightRunReads) {
   EXPECT_EQ(dem_percent(instruments.results()), dem_percent(straight.results));
 }
 
+INSTANTIATE_TEST_SUITE_P(Simulation, ResumedFromItsCheckpoint, ::testing::Values(1, 0));
+
 TEST(Simulation, PeriodicCheckpointsAreTakenWhileTheEngineRests) {
-  const Scene scene = small_scene(60);
-  const auto dir = std::filesystem::path(SEDEM_TEST_OUTPUT) / "simulation_periodic";
-  std::filesystem::create_directories(dir);
-  Simulation simulation(scene);
-  TimeLog log({10, 20, 30, 40, 50});
-  simulation.watch(log);
-  RunControl control;
-  control.checkpoint_every = 1e-9;  // due at every look
-  int taken = 0;
-  control.checkpoint = [&](const std::function<void(const std::string&)>& save) {
-    save((dir / "periodic.checkpoint").string());
-    ++taken;
-  };
-  ASSERT_TRUE(simulation.run(control).completed);
-  EXPECT_GE(taken, 1);
-  // The last one written loads into an engine of the same scene.
-  Simulation again(scene);
-  again.resume((dir / "periodic.checkpoint").string());
-  EXPECT_GT(again.time(), 0.0);
-  EXPECT_LE(again.time(), 60.0);
+  for (std::size_t capacity : {2, 0}) {
+    const Scene scene = small_scene(60);
+    const auto dir = std::filesystem::path(SEDEM_TEST_OUTPUT) / "simulation_periodic";
+    std::filesystem::create_directories(dir);
+    Simulation simulation(scene);
+    TimeLog log({10, 20, 30, 40, 50});
+    simulation.watch(log);
+    RunControl control;
+    control.capacity = capacity;
+    control.checkpoint_every = 1e-9;  // due at every look
+    int taken = 0;
+    control.checkpoint = [&](const std::function<void(const std::string&)>& save) {
+      save((dir / "periodic.checkpoint").string());
+      ++taken;
+    };
+    ASSERT_TRUE(simulation.run(control).completed);
+    EXPECT_GE(taken, 1);
+    // The last one written loads into an engine of the same scene.
+    Simulation again(scene);
+    again.resume((dir / "periodic.checkpoint").string());
+    EXPECT_GT(again.time(), 0.0);
+    EXPECT_LE(again.time(), 60.0);
+  }
 }
 
 }  // namespace
