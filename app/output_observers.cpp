@@ -55,12 +55,12 @@ FieldsObserver::FieldsObserver(const Scene& scene, const std::filesystem::path& 
       times_(every(scene.output.interval, scene.end_time)),
       writer_(out_dir, keep_before(resume_from)) {}
 
-void FieldsObserver::observe(const Snapshot& snapshot) {
+void FieldsObserver::observe_in_place(double time, const Particles& particles) {
   const LayerFields f =
-      compute_layer_fields(snapshot.particles, scene_.cylinder, scene_.fluid,
-                           scene_.sample.particle_density, std::size_t(scene_.instruments.layers));
+      compute_layer_fields(particles, scene_.cylinder, scene_.fluid, scene_.sample.particle_density,
+                           std::size_t(scene_.instruments.layers));
   render::LayerFields out;
-  out.time_s = snapshot.time;
+  out.time_s = time;
   out.column_height_m = scene_.cylinder.height;
   out.section_width_m = scene_.cylinder.diameter;
   out.particle_density_kg_m3 = scene_.sample.particle_density;
@@ -75,11 +75,11 @@ ColumnFigureObserver::ColumnFigureObserver(const Scene& scene)
   std::erase_if(times_, [&](double t) { return t > scene.end_time * (1 + 1e-12); });
 }
 
-void ColumnFigureObserver::observe(const Snapshot& snapshot) {
+void ColumnFigureObserver::observe_in_place(double time, const Particles& particles) {
   render::ColumnState state;
-  state.time_s = snapshot.time;
-  state.band_mass_fraction = render::band_fractions_from_particles(snapshot.particles, height_, 40);
-  state.particles = render::discs_of(snapshot.particles);
+  state.time_s = time;
+  state.band_mass_fraction = render::band_fractions_from_particles(particles, height_, 40);
+  state.particles = render::discs_of(particles);
   states_.push_back(std::move(state));
 }
 

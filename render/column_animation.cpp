@@ -40,12 +40,12 @@ std::filesystem::path ColumnAnimation::add(const ColumnState& state) {
   return file;
 }
 
-std::filesystem::path ColumnAnimation::add(const Snapshot& snapshot) {
+std::filesystem::path ColumnAnimation::add(double time, const Particles& particles) {
   ColumnState state;
-  state.time_s = snapshot.time;
+  state.time_s = time;
   state.band_mass_fraction =
-      band_fractions_from_particles(snapshot.particles, cylinder_.height, options_.bands);
-  state.particles = discs_of(snapshot.particles);
+      band_fractions_from_particles(particles, cylinder_.height, options_.bands);
+  state.particles = discs_of(particles);
   return add(state);
 }
 

@@ -28,8 +28,9 @@ class ColumnAnimation {
 
   // Renders one frame from the state given; returns the file written.
   std::filesystem::path add(const ColumnState& state);
-  // The same from a snapshot: bands from the particles' weighted masses.
-  std::filesystem::path add(const Snapshot& snapshot);
+  // The same from the particles: bands from their weighted masses.
+  std::filesystem::path add(double time, const Particles& particles);
+  std::filesystem::path add(const Snapshot& s) { return add(s.time, s.particles); }
 
   int frame_count() const { return count_; }
   static std::string frame_name(int index);  // "frames/column_000012.png"

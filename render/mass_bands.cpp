@@ -170,7 +170,8 @@ std::size_t row_count(const MassBandsFigure& f) {
 }  // namespace
 
 ParticleDiscs discs_of(const Particles& particles) {
-  return {particles.x, particles.y, particles.diameter};
+  auto narrow = [](const std::vector<double>& v) { return std::vector<float>(v.begin(), v.end()); };
+  return {narrow(particles.x), narrow(particles.y), narrow(particles.diameter)};
 }
 
 ZoomWindow zoom_window(const ParticleDiscs& p, double height, double width,
@@ -186,7 +187,7 @@ ZoomWindow zoom_window(const ParticleDiscs& p, double height, double width,
     if (p.y[i] < lo || p.y[i] >= hi || std::abs(p.x[i]) > 0.5 * width) continue;
     xs.push_back(p.x[i]);
     ys.push_back(p.y[i]);
-    largest = std::max(largest, p.diameter[i]);
+    largest = std::max(largest, double(p.diameter[i]));
   }
   ZoomWindow w;
   const double widest = std::min(width, hi - lo);

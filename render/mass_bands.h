@@ -18,8 +18,10 @@ namespace sedem::render {
 // panel per time (rows), several samples side by side (columns).
 
 // Particle centres and diameters in the section (m; x across, axis at 0; y up, bottom at 0).
+// Single precision: a disc is placed to 0.03 um, far below a pixel of the insets, and Fig. 11
+// keeps one copy for each of its times (at ten million particles, 240 MB each in double).
 struct ParticleDiscs {
-  std::vector<double> x, y, diameter;
+  std::vector<float> x, y, diameter;
 };
 ParticleDiscs discs_of(const Particles& particles);
 

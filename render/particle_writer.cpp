@@ -30,8 +30,8 @@ vtkSmartPointer<vtkDoubleArray> double_array(const char* name, int components, v
 
 }  // namespace
 
-vtkSmartPointer<vtkPolyData> particles_polydata(const Snapshot& snapshot, double particle_density) {
-  const auto& p = snapshot.particles;
+vtkSmartPointer<vtkPolyData> particles_polydata(double time, const Particles& p,
+                                                double particle_density) {
   const auto n = vtkIdType(p.size());
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
@@ -73,21 +73,21 @@ vtkSmartPointer<vtkPolyData> particles_polydata(const Snapshot& snapshot, double
   pd->AddArray(size_class);
   pd->AddArray(id);
   pd->SetActiveScalars("diameter");
-  set_time_value(poly, snapshot.time);
+  set_time_value(poly, time);
   return poly;
 }
 
 void write_particles_vtp(const Snapshot& snapshot, double particle_density,
                          const std::filesystem::path& file) {
-  write_vtk_xml(particles_polydata(snapshot, particle_density), file);
+  write_vtk_xml(particles_polydata(snapshot.time, snapshot.particles, particle_density), file);
 }
 
 ParticleSeriesWriter::ParticleSeriesWriter(const std::filesystem::path& out_dir,
                                            double particle_density, double keep_until)
     : particle_density_(particle_density), series_(out_dir, "particles", "vtp", keep_until) {}
 
-void ParticleSeriesWriter::write(const Snapshot& snapshot) {
-  series_.write(particles_polydata(snapshot, particle_density_), snapshot.time);
+void ParticleSeriesWriter::write(double time, const Particles& particles) {
+  series_.write(particles_polydata(time, particles, particle_density_), time);
 }
 
 }  // namespace sedem::render

@@ -15,7 +15,8 @@ namespace sedem::render {
 // Writes a snapshot as VTK XML PolyData (appended raw binary, zlib-compressed): one vertex per
 // particle, point data diameter, radius (m), velocity (3 components, m/s, the active vectors), mass
 // (kg), weight, size_class, id; field data TimeValue. z = 0: the section's plane.
-vtkSmartPointer<vtkPolyData> particles_polydata(const Snapshot& snapshot, double particle_density);
+vtkSmartPointer<vtkPolyData> particles_polydata(double time, const Particles& particles,
+                                                double particle_density);
 void write_particles_vtp(const Snapshot& snapshot, double particle_density,
                          const std::filesystem::path& file);
 
@@ -24,7 +25,9 @@ class ParticleSeriesWriter {
  public:
   ParticleSeriesWriter(const std::filesystem::path& out_dir, double particle_density,
                        double keep_until = -std::numeric_limits<double>::infinity());
-  void write(const Snapshot& snapshot);
+  // The particles where they are: a run of ten million holds no copy of them.
+  void write(double time, const Particles& particles);
+  void write(const Snapshot& snapshot) { write(snapshot.time, snapshot.particles); }
 
  private:
   double particle_density_;
