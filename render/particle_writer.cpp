@@ -1,9 +1,13 @@
 #include "render/particle_writer.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
+#include <new>
 #include <numbers>
 #include <stdexcept>
+#include <type_traits>
 
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
@@ -11,6 +15,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkSOADataArrayTemplate.h>
 #include <vtkSmartPointer.h>
 #include <vtkTypeUInt32Array.h>
 
@@ -30,35 +35,49 @@ vtkSmartPointer<vtkDoubleArray> double_array(const char* name, int components, v
 
 }  // namespace
 
+// The arrays the particles hold already are wrapped, not copied (VTK only reads them to write
+// the file): at ten million particles a copy of every array was a gigabyte at each write.
 vtkSmartPointer<vtkPolyData> particles_polydata(double time, const Particles& p,
                                                 double particle_density) {
   const auto n = vtkIdType(p.size());
+  auto wrap = [n](auto array, const auto& values) {
+    using T = std::decay_t<decltype(values[0])>;
+    array->SetArray(const_cast<T*>(values.data()), n, 1);  // 1: not VTK's to free
+    return array;
+  };
+  // Points and velocities: the particles' own x and y, and the plane's zeros as the third
+  // component (calloc'd and VTK's to free: untouched zero pages take no memory).
+  auto three = [&](const char* name, const std::vector<double>& a, const std::vector<double>& b) {
+    auto v = vtkSmartPointer<vtkSOADataArrayTemplate<double>>::New();
+    v->SetName(name);
+    v->SetNumberOfComponents(3);
+    v->SetArray(0, const_cast<double*>(a.data()), n, true, true);
+    v->SetArray(1, const_cast<double*>(b.data()), n, true, true);
+    auto* zeros = static_cast<double*>(std::calloc(std::size_t(std::max<vtkIdType>(n, 1)), 8));
+    if (!zeros) throw std::bad_alloc();
+    v->SetArray(2, zeros, n, true, false, vtkAbstractArray::VTK_DATA_ARRAY_FREE);
+    return v;
+  };
   auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(n);
-  auto diameter = double_array("diameter", 1, n);
+  points->SetData(three("Points", p.x, p.y));
+  auto diameter = wrap(vtkSmartPointer<vtkDoubleArray>::New(), p.diameter);
+  diameter->SetName("diameter");
   auto radius = double_array("radius", 1, n);
-  auto velocity = double_array("velocity", 3, n);
+  auto velocity = three("velocity", p.vx, p.vy);
   auto mass = double_array("mass", 1, n);
-  auto weight = double_array("weight", 1, n);
-  auto size_class = vtkSmartPointer<vtkIntArray>::New();
+  auto weight = wrap(vtkSmartPointer<vtkDoubleArray>::New(), p.weight);
+  weight->SetName("weight");
+  auto size_class = wrap(vtkSmartPointer<vtkIntArray>::New(), p.size_class);
   size_class->SetName("size_class");
-  size_class->SetNumberOfTuples(n);
-  auto id = vtkSmartPointer<vtkTypeUInt32Array>::New();
+  auto id = wrap(vtkSmartPointer<vtkTypeUInt32Array>::New(), p.id);
   id->SetName("id");
-  id->SetNumberOfTuples(n);
   auto verts = vtkSmartPointer<vtkCellArray>::New();
+  verts->Use32BitStorage();
   verts->AllocateExact(n, n);
   for (vtkIdType i = 0; i < n; ++i) {
     const double d = p.diameter[std::size_t(i)];
-    points->SetPoint(i, p.x[std::size_t(i)], p.y[std::size_t(i)], 0.0);
-    diameter->SetValue(i, d);
     radius->SetValue(i, 0.5 * d);
-    velocity->SetTuple3(i, p.vx[std::size_t(i)], p.vy[std::size_t(i)], 0.0);
     mass->SetValue(i, particle_density * std::numbers::pi / 6.0 * d * d * d);
-    weight->SetValue(i, p.weight[std::size_t(i)]);
-    size_class->SetValue(i, p.size_class[std::size_t(i)]);
-    id->SetValue(i, p.id[std::size_t(i)]);
     verts->InsertNextCell(1, &i);
   }
   auto poly = vtkSmartPointer<vtkPolyData>::New();
