@@ -8,7 +8,8 @@
 //
 //   sedem_bench_invert [--scenes ...] [--source reference|dem] [--count 1000]
 //                      [--tests hydrometer,buoyancy,pipette] [--copies 100] [--replicas 100]
-//                      [--hidden N [--hidden-seed S]] [--method d422|d7928]
+//                      [--hidden N [--hidden-seed S]] [--method d7928|d422]
+//                      [--hydrometer-resolution 1]
 //                      [--set key=value ...] [--out DIR]
 //
 // --hidden N replaces the paper's samples by N curves of each shape a laboratory meets
@@ -21,9 +22,11 @@
 // --source reference reads the continuum reference solution (what the DEM converges to; the
 // forward model's physics, on the sample's own 220 size classes); --source dem simulates the
 // sample with --count particles (minutes per sample) and reads the DEM. Standard reductions:
-// ASTM D422 for the 152H (its effective depth, the scene's cylinder volume; kept so that the
-// recorded results compare with the earlier ones), Eq. 16 with
-// Eq. 22 or Eq. 17 for the sphere and the pipette. Writes invert_bench.csv into --out.
+// for the 152H what `sedem reduce` does by default, ASTM D7928 (--method d422 for D422, which
+// the results before 2026-11 were judged by), with the scene's cylinder volume; Eq. 16 with
+// Eq. 22 or Eq. 17 for the sphere and the pipette. The 152H's readings are rounded to
+// --hydrometer-resolution (default 1 g/L, its graduation; the inversion's noise model takes the
+// same). Writes invert_bench.csv into --out.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -67,10 +70,11 @@ struct Case {
 // The readings as recorded (rounded; the 152H's clear-liquid reading subtracted) and their
 // standard reduction, each raw value first shifted by `shift` (noisy copies).
 invert::RecordedTest recorded(const Scene& scene, Test test, const Case& c,
-                              const std::vector<double>& shift, LabMethod method) {
+                              const std::vector<double>& shift, LabMethod method,
+                              double resolution) {
   std::vector<double> raw = c.raw;
   for (std::size_t i = 0; i < shift.size() && i < raw.size(); ++i) raw[i] += shift[i];
-  return invert::record_simulated(test_setup(scene), test, c.times, raw, 0, method);
+  return invert::record_simulated(test_setup(scene), test, c.times, raw, resolution, method);
 }
 
 // A soil to invert: a scene file and the keys set on it.
@@ -95,7 +99,8 @@ int main(int argc, char** argv) {
   double tau = 0.7;
   int hidden = 0;
   std::uint64_t hidden_seed = 2026;
-  std::string method_name = "d422";
+  std::string method_name = "d7928";
+  double hydrometer_resolution = 0;  // 0: the 152H's default (its 1 g/L graduation)
   cli.add_option("--scenes", scenes, "Scene files")->capture_default_str();
   cli.add_option("--source", source, "reference or dem")
       ->check(CLI::IsMember({"reference", "dem"}))
@@ -112,8 +117,12 @@ int main(int argc, char** argv) {
   cli.add_option("--hidden", hidden, "Curves of each shape instead of the paper's samples")
       ->capture_default_str();
   cli.add_option("--hidden-seed", hidden_seed, "Seed of the hidden curves")->capture_default_str();
-  cli.add_option("--method", method_name, "The 152H's standard reduction: d422 or d7928")
+  cli.add_option("--method", method_name, "The 152H's standard reduction: d7928 or d422")
       ->check(CLI::IsMember({"d422", "d7928"}))
+      ->capture_default_str();
+  cli.add_option("--hydrometer-resolution", hydrometer_resolution,
+                 "Step the 152H's readings are rounded to, g/L (0: its 1 g/L graduation)")
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cli.add_option("--out", out, "Folder for the CSV")->capture_default_str();
   CLI11_PARSE(cli, argc, argv);
@@ -174,13 +183,17 @@ int main(int argc, char** argv) {
         c.times.push_back(r.time);
         c.raw.push_back(raw_value(*it, r, test));
       }
-      const auto rec = recorded(scene, test, c, {}, method);
+      // The step readings are rounded to, and the inversion's noise model with it.
+      const double resolution =
+          test == Test::hydrometer && hydrometer_resolution > 0 ? hydrometer_resolution : 0.0;
+      const auto rec = recorded(scene, test, c, {}, method, resolution);
       const auto& data = rec.data;
       const auto& standard = rec.standard;
       invert::InversionOptions options;
       options.bootstrap = 0;
       options.refine = refine;
       options.tau = tau;
+      options.resolution = resolution;
       const auto t0 = std::chrono::steady_clock::now();
       const auto curve = invert::invert_readings(test_setup(scene), test, data, options);
       const double seconds =
@@ -224,12 +237,13 @@ int main(int argc, char** argv) {
       double cover_between = std::nan("");
       if (copies > 0) {
         std::mt19937_64 rng(7);
-        const double res = invert::default_resolution(test);
+        const double res = resolution > 0 ? resolution : invert::default_resolution(test);
         std::uniform_real_distribution<double> noise(-0.5 * res, 0.5 * res);
         invert::InversionOptions o;
         o.bootstrap = replicas;
         o.refine = refine;
         o.tau = tau;
+        o.resolution = resolution;
         int inside = 0, total = 0, inside_bounds = 0, inside_between = 0, total_between = 0;
         double width_sum = 0;
         for (int k = 0; k < copies; ++k) {
@@ -237,7 +251,7 @@ int main(int argc, char** argv) {
           for (std::size_t i = 0; i < c.raw.size(); ++i) shift.push_back(noise(rng));
           o.seed = std::uint64_t(k + 1);
           const auto noisy = invert::invert_readings(
-              test_setup(scene), test, recorded(scene, test, c, shift, method).data, o);
+              test_setup(scene), test, recorded(scene, test, c, shift, method, resolution).data, o);
           for (double d : noisy.between_readings()) {
             const double truth = true_percent_finer(sample.classes, d);
             if (truth <= 0.5 || truth >= 99.5) continue;

@@ -46,7 +46,7 @@ Grid log_grid(double smallest, double largest, std::size_t count) {
   return g;
 }
 
-Grid reading_grid(std::vector<double> diameters, int refine) {
+Grid reading_grid(std::vector<double> diameters, int refine, const std::vector<double>& edges) {
   std::sort(diameters.begin(), diameters.end());
   std::vector<double> base;
   for (double d : diameters) {
@@ -66,6 +66,12 @@ Grid reading_grid(std::vector<double> diameters, int refine) {
     for (int s = 0; s < parts; ++s) g.nodes.push_back(lo * std::pow(hi / lo, double(s) / parts));
   }
   g.nodes.push_back(anchors.back());
+  for (double e : edges) {
+    if (!(e > g.nodes.front() && e < g.nodes.back())) continue;
+    const auto at = std::lower_bound(g.nodes.begin(), g.nodes.end(), e);
+    if (e < 1.01 * *(at - 1) || e * 1.01 > *at) continue;
+    g.nodes.insert(at, e);
+  }
   return g;
 }
 
@@ -277,9 +283,33 @@ double ForwardModel::front_speed(double diameter) const {
 }
 
 double ForwardModel::model_diameter(double time, double value) const {
-  const double speed = reading_depth(value) / time;
+  return diameter_at(reading_depth(value), time);
+}
+
+double ForwardModel::half_span() const {
+  switch (test_) {
+    case Test::hydrometer:
+      return 0.5 * hydrometer_.bulb_length;
+    case Test::buoyancy:
+      return 0.5 * sphere_.diameter;
+    case Test::pipette:
+      return pipette_.radius(setup_.cylinder);
+  }
+  return 0;
+}
+
+std::pair<double, double> ForwardModel::reading_window(double time, double value) const {
+  const double depth = reading_depth(value), half = half_span();
+  // The top no higher than a hundredth of the depth: a front at the surface is d = 0.
+  return {diameter_at(std::max(0.01 * depth, depth - half), time), diameter_at(depth + half, time)};
+}
+
+double ForwardModel::diameter_at(double depth, double time) const {
+  const double speed = depth / time;
   // The speed grows with the diameter: bisection in log d from Stokes' estimate.
-  double lo = stokes_diameter(time, value) / 4.0, hi = stokes_diameter(time, value) * 4.0;
+  const double stokes =
+      stokes::limiting_diameter(depth, time, suspension_.particle_density, suspension_.fluid);
+  double lo = stokes / 4.0, hi = stokes * 4.0;
   for (int it = 0; it < 100 && hi / lo > 1 + 1e-12; ++it) {
     const double mid = std::sqrt(lo * hi);
     (front_speed(mid) < speed ? lo : hi) = mid;

@@ -363,14 +363,19 @@ InvertedCurve invert_readings(const TestSetup& setup, Test test,
   // The grid: a node at each reading's pinned diameter, refined between them.
   {
     const ForwardModel probe(setup, test, log_grid(1e-6, 1e-4, 2), times);
-    for (const auto& m : data)
-      out.reading_diameter.push_back(probe.model_diameter(
-          m.time,
-          std::isnan(m.depth_reading) ? m.value : m.depth_reading - probe.clear_liquid_reading()));
+    for (const auto& m : data) {
+      const double depth_value =
+          std::isnan(m.depth_reading) ? m.value : m.depth_reading - probe.clear_liquid_reading();
+      out.reading_diameter.push_back(probe.model_diameter(m.time, depth_value));
+      out.reading_window.push_back(probe.reading_window(m.time, depth_value));
+    }
     out.resolved_max = *std::max_element(out.reading_diameter.begin(), out.reading_diameter.end());
     out.resolved_min = *std::min_element(out.reading_diameter.begin(), out.reading_diameter.end());
   }
-  ForwardModel model(setup, test, reading_grid(out.reading_diameter, options.refine), times,
+  std::vector<double> edges;
+  if (options.window_nodes)
+    for (const auto& [lo, hi] : out.reading_window) edges.insert(edges.end(), {lo, hi});
+  ForwardModel model(setup, test, reading_grid(out.reading_diameter, options.refine, edges), times,
                      options.subclasses);
   const std::vector<double> widths = bin_widths(model.grid());
   Fit fit = fit_readings(model, measured, out.sigma, options);

@@ -23,7 +23,10 @@ struct Measurement {
 };
 
 struct InversionOptions {
-  int refine = 2;           // grid nodes between each two readings' diameters (reading_grid)
+  int refine = 2;  // grid nodes between each two readings' diameters (reading_grid)
+  // A node also at each edge of every reading's window (ForwardModel::reading_window), so that
+  // the curve's slope at a knee just beside a reading does not leak into that reading.
+  bool window_nodes = true;
   double resolution = 0;    // of a reading, in its unit; 0: the test's default
   int subclasses = 8;       // size classes per bin in the forward model
   int bootstrap = 200;      // replicas for the band (0: no band)
@@ -80,6 +83,8 @@ struct InvertedCurve {
   std::vector<double> bound_tolerance;        // per reading, in its unit
   double resolved_min = 0, resolved_max = 0;  // reading_diameter's extremes
   std::vector<double> reading_diameter;  // where each reading pins the curve, m (model_diameter)
+  // The sizes each reading averages over (ForwardModel::reading_window), m.
+  std::vector<std::pair<double, double>> reading_window;
   // Where the strict bounds are wider than this (InversionOptions::open_width, pp) the
   // readings cannot tell the curve (open_at): any curve they allow may lie tens of pp from this
   // one (a knee between two readings), and the band there is the bounds.
