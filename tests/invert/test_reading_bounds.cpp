@@ -118,10 +118,11 @@ TEST(ReadingBounds, OpenAtTheKneeNoReadingSees) {
 }
 
 // Bounds that are a guarantee hold for any curve, not only for the curves of one grid: on
-// a grid 4 and 8 times finer than their own they may tighten but never loosen, at the nodes
+// a grid 4 times finer than their own they may tighten but never loosen, at the nodes
 // and between them. Before, on sample 4's sphere readings, the least percent finer allowed at
 // 37.36 um was 90.9 % on the bounds' grid and fell as it was refined (86, 82, 79, 77 %); now
-// 74.0 % on it and 73.4 and 73.3 % on grids 4 and 8 times finer. What is left (up to 0.7 pp;
+// 74.0 % on it and 73.4 and 73.3 % on grids 4 and 8 times finer (8 times finer took two
+// minutes once the readings' windows added nodes; it is left out). What is left (up to 0.7 pp;
 // the pipette's 0.8) is the linearisation and the three sizes each bin is probed at, hence the
 // 1 pp allowed.
 TEST(ReadingBounds, NoTighterThanOnAFinerGrid) {
@@ -147,7 +148,7 @@ TEST(ReadingBounds, NoTighterThanOnAFinerGrid) {
       where.push_back(d);
       where.push_back(own.bound_diameter[k]);
     }
-    for (int split : {16, 32}) {
+    for (int split : {16}) {
       const auto finer = bounds_at(split);
       ASSERT_FALSE(finer.bound_lower.empty()) << test_name(t) << " split " << split;
       double loosened = 0;
