@@ -55,7 +55,7 @@ FieldsObserver::FieldsObserver(const Scene& scene, const std::filesystem::path& 
       times_(every(scene.output.interval, scene.end_time)),
       writer_(out_dir, keep_before(resume_from)) {}
 
-void FieldsObserver::observe_in_place(double time, const Particles& particles) {
+void FieldsObserver::observe(double time, const Particles& particles) {
   const LayerFields f =
       compute_layer_fields(particles, scene_.cylinder, scene_.fluid, scene_.sample.particle_density,
                            std::size_t(scene_.instruments.layers));
@@ -75,7 +75,7 @@ ColumnFigureObserver::ColumnFigureObserver(const Scene& scene)
   std::erase_if(times_, [&](double t) { return t > scene.end_time * (1 + 1e-12); });
 }
 
-void ColumnFigureObserver::observe_in_place(double time, const Particles& particles) {
+void ColumnFigureObserver::observe(double time, const Particles& particles) {
   render::ColumnState state;
   state.time_s = time;
   state.band_mass_fraction = render::band_fractions_from_particles(particles, height_, 40);

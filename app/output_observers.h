@@ -22,8 +22,7 @@ class ParticleSeriesObserver : public Observer {
                          const std::filesystem::path& out_dir, double resume_from);
   std::string name() const override { return "particles"; }
   std::vector<double> wanted_times() const override { return times_; }
-  void observe(const Snapshot& s) override { observe_in_place(s.time, s.particles); }
-  void observe_in_place(double time, const Particles& p) override { writer_.write(time, p); }
+  void observe(double time, const Particles& p) override { writer_.write(time, p); }
 
  private:
   std::vector<double> times_;
@@ -38,8 +37,7 @@ class ColumnFrameObserver : public Observer {
                       bool partial = false);
   std::string name() const override { return "frames"; }
   std::vector<double> wanted_times() const override { return times_; }
-  void observe(const Snapshot& s) override { observe_in_place(s.time, s.particles); }
-  void observe_in_place(double time, const Particles& p) override { animation_.add(time, p); }
+  void observe(double time, const Particles& p) override { animation_.add(time, p); }
 
  private:
   std::vector<double> times_;
@@ -52,8 +50,7 @@ class FieldsObserver : public Observer {
   FieldsObserver(const Scene& scene, const std::filesystem::path& out_dir, double resume_from);
   std::string name() const override { return "fields"; }
   std::vector<double> wanted_times() const override { return times_; }
-  void observe(const Snapshot& s) override { observe_in_place(s.time, s.particles); }
-  void observe_in_place(double time, const Particles& particles) override;
+  void observe(double time, const Particles& particles) override;
 
  private:
   Scene scene_;
@@ -67,8 +64,7 @@ class ColumnFigureObserver : public Observer {
   explicit ColumnFigureObserver(const Scene& scene);
   std::string name() const override { return "fig11"; }
   std::vector<double> wanted_times() const override { return times_; }
-  void observe(const Snapshot& s) override { observe_in_place(s.time, s.particles); }
-  void observe_in_place(double time, const Particles& particles) override;
+  void observe(double time, const Particles& particles) override;
   bool accumulates() const override { return true; }
   const std::vector<render::ColumnState>& states() const { return states_; }
 

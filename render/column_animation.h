@@ -4,7 +4,7 @@
 #include <string>
 
 #include "core/model/cylinder.h"
-#include "core/model/snapshot.h"
+#include "core/model/particles.h"
 #include "render/mass_bands.h"
 
 namespace sedem::render {
@@ -30,7 +30,6 @@ class ColumnAnimation {
   std::filesystem::path add(const ColumnState& state);
   // The same from the particles: bands from their weighted masses.
   std::filesystem::path add(double time, const Particles& particles);
-  std::filesystem::path add(const Snapshot& s) { return add(s.time, s.particles); }
 
   int frame_count() const { return count_; }
   static std::string frame_name(int index);  // "frames/column_000012.png"

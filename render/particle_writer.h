@@ -27,7 +27,6 @@ class ParticleSeriesWriter {
                        double keep_until = -std::numeric_limits<double>::infinity());
   // The particles where they are: a run of ten million holds no copy of them.
   void write(double time, const Particles& particles);
-  void write(const Snapshot& snapshot) { write(snapshot.time, snapshot.particles); }
 
  private:
   double particle_density_;

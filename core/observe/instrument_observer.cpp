@@ -27,11 +27,7 @@ InstrumentObserver::InstrumentObserver(const TestSetup& setup, const Sample& sam
   std::erase_if(times_, [&](double t) { return t > setup.end_time * (1 + 1e-12); });
 }
 
-void InstrumentObserver::observe(const Snapshot& snapshot) {
-  observe_in_place(snapshot.time, snapshot.particles);
-}
-
-void InstrumentObserver::observe_in_place(double time, const Particles& particles) {
+void InstrumentObserver::observe(double time, const Particles& particles) {
   if (contains_time(reading_times_, time)) panel_.observe(time, particles);
   if (contains_time(profile_times_, time))
     profiles_.push_back(largest_diameter_profile(particles, setup_.cylinder, setup_.fluid,

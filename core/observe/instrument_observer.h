@@ -29,8 +29,7 @@ class InstrumentObserver : public Observer {
   InstrumentObserver(const TestSetup& setup, const Sample& sample);
   std::string name() const override { return "instruments"; }
   std::vector<double> wanted_times() const override { return times_; }
-  void observe(const Snapshot& snapshot) override;
-  void observe_in_place(double time, const Particles& particles) override;
+  void observe(double time, const Particles& particles) override;
   bool accumulates() const override { return true; }
 
   // The readings taken so far against the reference at the same times, with at most

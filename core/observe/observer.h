@@ -18,12 +18,11 @@ class Observer {
   virtual std::string name() const = 0;
   // Times (s) at which this observer wants a snapshot, ascending.
   virtual std::vector<double> wanted_times() const = 0;
-  virtual void observe(const Snapshot& snapshot) = 0;
-  // The same, looking at the engine's particles where they are (a run on one thread): an
-  // observer that only reads them overrides it to spare the copy.
-  virtual void observe_in_place(double time, const Particles& particles) {
-    observe(Snapshot{time, particles});
-  }
+  // The particles at that time, where they are (a snapshot's, or the engine's own in a run
+  // without snapshots): an observer that keeps them copies what it keeps. (A default that
+  // made a Snapshot for observers that only read had each of them copy 64 bytes a particle
+  // at every output of a run without snapshots.)
+  virtual void observe(double time, const Particles& particles) = 0;
   // After the last snapshot, or when the run is stopped early: flush what was computed.
   virtual void finish() {}
   // True for an observer whose result depends on every snapshot it has seen (readings,

@@ -10,12 +10,13 @@ std::vector<double> ObserverSet::times() const {
 
 void ObserverSet::show(const Snapshot& snapshot) const {
   for (Observer* o : observers_)
-    if (contains_time(o->wanted_times(), snapshot.time)) o->observe(snapshot);
+    if (contains_time(o->wanted_times(), snapshot.time))
+      o->observe(snapshot.time, snapshot.particles);
 }
 
 void ObserverSet::show_in_place(double time, const Particles& particles) const {
   for (Observer* o : observers_)
-    if (contains_time(o->wanted_times(), time)) o->observe_in_place(time, particles);
+    if (contains_time(o->wanted_times(), time)) o->observe(time, particles);
 }
 
 bool ObserverSet::needs_replay(double until) const {
@@ -28,7 +29,8 @@ bool ObserverSet::needs_replay(double until) const {
 
 void ObserverSet::replay(const Snapshot& saved) const {
   for (Observer* o : observers_)
-    if (o->accumulates() && contains_time(o->wanted_times(), saved.time)) o->observe(saved);
+    if (o->accumulates() && contains_time(o->wanted_times(), saved.time))
+      o->observe(saved.time, saved.particles);
 }
 
 void ObserverSet::finish() const {

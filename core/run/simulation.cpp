@@ -1,6 +1,8 @@
 #include "core/run/simulation.h"
 
 #include <algorithm>
+#include <exception>
+#include <string>
 
 #include "core/engine/engine.h"
 #include "core/engine/runner.h"
@@ -39,38 +41,72 @@ void Simulation::resume(const std::string& checkpoint) {
   engine_->load_checkpoint(checkpoint);
 }
 
-RunEnd Simulation::run(const RunControl& control) {
-  if (control.capacity == 0) return run_in_place(control);
+namespace {
+
+// When the periodic checkpoints of a run are due, and taking one (a failure does not end the
+// run: it is a warning).
+class CheckpointClock {
+ public:
   using clock = std::chrono::steady_clock;
+  explicit CheckpointClock(const RunControl& c)
+      : control_(c),
+        periodic_(c.checkpoint && c.checkpoint_every > 0),
+        every_(c.checkpoint_every),
+        first_(c.first_checkpoint > 0 ? std::min(c.first_checkpoint, c.checkpoint_every)
+                                      : c.checkpoint_every) {}
+  bool periodic() const { return periodic_; }
+  bool due() const { return periodic_ && clock::now() - last_ >= (done_ ? every_ : first_); }
+  // `save` writes the engine's state to a path, the engine at rest.
+  void take(const std::function<void(const std::string&)>& save) {
+    try {
+      control_.checkpoint(save);
+    } catch (const std::exception& e) {
+      if (control_.warning)
+        control_.warning(std::string("the periodic checkpoint failed: ") + e.what());
+    }
+    last_ = clock::now();
+    done_ = true;
+  }
+
+ private:
+  const RunControl& control_;
+  bool periodic_;
+  std::chrono::duration<double> every_, first_;
+  clock::time_point last_ = clock::now();
+  bool done_ = false;
+};
+
+}  // namespace
+
+// The observers' times from the engine's on, and the scene's end.
+std::vector<double> Simulation::remaining_times() const {
   const double end = scene_.end_time, from = engine_->time();
   std::vector<double> times = merge_times({observers_.times(), {end}});
   std::erase_if(times, [&](double t) { return t > end * (1 + 1e-12) || t < from; });
+  return times;
+}
 
-  EngineRunner runner(*engine_, std::move(times), control.capacity);
+RunEnd Simulation::run(const RunControl& control) {
+  if (control.capacity == 0) return run_in_place(control);
+  EngineRunner runner(*engine_, remaining_times(), control.capacity);
   auto report = [&] {
     if (!control.progress) return;
     const auto p = runner.progress();
     control.progress(p.time, p.particle_steps);
   };
-  const bool periodic = control.checkpoint && control.checkpoint_every > 0;
-  const auto every = std::chrono::duration<double>(control.checkpoint_every);
-  const auto first = std::chrono::duration<double>(
-      control.first_checkpoint > 0 ? std::min(control.first_checkpoint, control.checkpoint_every)
-                                   : control.checkpoint_every);
+  CheckpointClock checkpoints(control);
   // A checkpoint due more often than the poll is looked for more often.
-  const auto poll = periodic && control.checkpoint_every < 0.2
+  const auto poll = checkpoints.periodic() && control.checkpoint_every < 0.2
                         ? std::min(control.poll, std::chrono::milliseconds(20))
                         : control.poll;
   bool stopped = false;
-  auto last_checkpoint = clock::now();
-  bool first_done = false;
   runner.start();
   while (!runner.ended()) {
     if (control.stop_requested && control.stop_requested()) {
       stopped = true;
       break;
     }
-    if (periodic && clock::now() - last_checkpoint >= (first_done ? every : first)) {
+    if (checkpoints.due()) {
       // Every snapshot before the engine's time is shown first: a resumed run replays those
       // and goes on from the saved state.
       runner.pause();
@@ -78,15 +114,8 @@ RunEnd Simulation::run(const RunControl& control) {
       // Taking a snapshot off a full queue wakes the engine for a moment before it rests on
       // the pause again: wait for that rest, or the checkpoint would find it stepping.
       runner.pause();
-      try {
-        control.checkpoint([&](const std::string& path) { runner.checkpoint(path); });
-      } catch (const std::exception& e) {
-        if (control.warning)
-          control.warning(std::string("the periodic checkpoint failed: ") + e.what());
-      }
+      checkpoints.take([&](const std::string& path) { runner.checkpoint(path); });
       runner.resume();
-      last_checkpoint = clock::now();
-      first_done = true;
     }
     auto snapshot = runner.next(poll);
     report();
@@ -106,22 +135,14 @@ RunEnd Simulation::run(const RunControl& control) {
 
 RunEnd Simulation::run_in_place(const RunControl& control) {
   using clock = std::chrono::steady_clock;
-  const double end = scene_.end_time, from = engine_->time();
-  std::vector<double> times = merge_times({observers_.times(), {end}});
-  std::erase_if(times, [&](double t) { return t > end * (1 + 1e-12) || t < from; });
-  const bool periodic = control.checkpoint && control.checkpoint_every > 0;
-  const auto every = std::chrono::duration<double>(control.checkpoint_every);
-  const auto first = std::chrono::duration<double>(
-      control.first_checkpoint > 0 ? std::min(control.first_checkpoint, control.checkpoint_every)
-                                   : control.checkpoint_every);
+  const double end = scene_.end_time;
   auto report = [&] {
     if (control.progress) control.progress(engine_->time(), engine_->stats().particle_steps);
   };
   RunEnd result;
-  // A stop asked before the run is seen before its first step.
-  auto last_checkpoint = clock::now(), last_report = clock::time_point{};
-  bool first_done = false;
-  for (double t : times) {
+  CheckpointClock checkpoints(control);
+  auto last_report = clock::time_point{};  // a stop asked before the run comes before a step
+  for (double t : remaining_times()) {
     while (engine_->time() < t) {
       const auto now = clock::now();
       if (now - last_report >= control.poll) {
@@ -131,16 +152,8 @@ RunEnd Simulation::run_in_place(const RunControl& control) {
       }
       // Every observer has seen every time before the engine's: a resumed run replays those
       // and goes on from the saved state.
-      if (periodic && now - last_checkpoint >= (first_done ? every : first)) {
-        try {
-          control.checkpoint([&](const std::string& path) { engine_->save_checkpoint(path); });
-        } catch (const std::exception& e) {
-          if (control.warning)
-            control.warning(std::string("the periodic checkpoint failed: ") + e.what());
-        }
-        last_checkpoint = clock::now();
-        first_done = true;
-      }
+      if (checkpoints.due())
+        checkpoints.take([&](const std::string& path) { engine_->save_checkpoint(path); });
       try {
         engine_->step(t);
       } catch (const std::exception& e) {  // an instability, memory: the run ends here

@@ -94,6 +94,7 @@ class Simulation {
   std::size_t peak_engine_bytes() const { return peak_engine_bytes_; }
 
  private:
+  std::vector<double> remaining_times() const;
   Scene scene_;
   std::unique_ptr<Engine> engine_;
   ObserverSet observers_;

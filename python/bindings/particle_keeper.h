@@ -23,7 +23,9 @@ class ParticleKeeper : public Observer {
   void snap_to(const std::vector<double>& run_times, double output_interval, double end_time);
   std::string name() const override { return "python particles"; }
   std::vector<double> wanted_times() const override { return times_; }
-  void observe(const Snapshot& snapshot) override { kept_.push_back(snapshot); }
+  void observe(double time, const Particles& particles) override {
+    kept_.push_back(Snapshot{time, particles});
+  }
   const std::vector<Snapshot>& kept() const { return kept_; }
 
  private:

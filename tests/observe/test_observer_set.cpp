@@ -17,7 +17,7 @@ class Recorder : public Observer {
       : times_(std::move(times)), accumulates_(accumulates) {}
   std::string name() const override { return "recorder"; }
   std::vector<double> wanted_times() const override { return times_; }
-  void observe(const Snapshot& s) override { seen.push_back(s.time); }
+  void observe(double time, const Particles&) override { seen.push_back(time); }
   void finish() override { ++finished; }
   bool accumulates() const override { return accumulates_; }
   std::vector<double> seen;

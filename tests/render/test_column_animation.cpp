@@ -23,7 +23,7 @@ TEST(ColumnAnimation, NumberedFramesOnAFixedGreyScale) {
   for (int frame = 0; frame < 3; ++frame) {
     snap.time = 100.0 * frame;
     for (auto& y : snap.particles.y) y *= 0.5;  // everything settles by half each frame
-    animation.add(snap);
+    animation.add(snap.time, snap.particles);
   }
   EXPECT_EQ(animation.frame_count(), 3);
   EXPECT_EQ(render::ColumnAnimation::frame_name(12), "frames/column_000012.png");

@@ -60,7 +60,7 @@ TEST(ParaviewFiles, ParticlesAreRawZlibWithTime) {
   auto snap = test::lattice_snapshot();
   for (double t : {0.0, 0.5, 60.0}) {
     snap.time = t;
-    writer.write(snap);
+    writer.write(snap.time, snap.particles);
   }
   expect_series(dir / "particles.pvd", {0.0, 0.5, 60.0});
   expect_raw_compressed(dir / "particles/particles_000002.vtp");
@@ -248,7 +248,7 @@ std::filesystem::path write_run(const std::string& name) {
   auto snap = test::lattice_snapshot();
   for (double t : {0.0, 10.0, 20.0}) {
     snap.time = t;
-    particles.write(snap);
+    particles.write(snap.time, snap.particles);
     render::LayerFields f;
     f.time_s = t;
     for (int j = 0; j < 40; ++j) {
@@ -361,7 +361,7 @@ std::filesystem::path write_sample5_like_run(const std::string& name) {
       // 60 g in the paper's litre, shared by the grains: 0.06 kg/m^3 each on average.
       solid[j] += (p.y[i] < 0.012 ? 20.0 : 1.0) * 60.0 * double(layers) / double(n);
     }
-    particles.write(snap);
+    particles.write(snap.time, snap.particles);
     render::LayerFields f;
     f.time_s = t;
     f.column_height_m = height;

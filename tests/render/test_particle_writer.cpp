@@ -21,7 +21,7 @@ TEST(ParticleWriter, VtpReadsBackWithEveryArray) {
   std::filesystem::remove_all(dir);
   const auto snap = test::lattice_snapshot();
   render::ParticleSeriesWriter writer(dir, 2500.0);
-  writer.write(snap);
+  writer.write(snap.time, snap.particles);
 
   auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
   reader->SetFileName((dir / "particles/particles_000000.vtp").c_str());
@@ -54,7 +54,7 @@ TEST(ParticleWriter, PvdListsEveryTimeInOrder) {
   auto snap = test::lattice_snapshot();
   for (double t : {0.0, 10.0, 20.0}) {
     snap.time = t;
-    writer.write(snap);
+    writer.write(snap.time, snap.particles);
   }
   std::ifstream in(dir / "particles.pvd");
   std::stringstream text;

@@ -27,9 +27,9 @@ class TimeLog : public Observer {
   explicit TimeLog(std::vector<double> times) : times_(std::move(times)) {}
   std::string name() const override { return "log"; }
   std::vector<double> wanted_times() const override { return times_; }
-  void observe(const Snapshot& s) override {
-    seen.push_back(s.time);
-    counts.push_back(s.particles.size());
+  void observe(double time, const Particles& particles) override {
+    seen.push_back(time);
+    counts.push_back(particles.size());
   }
   std::vector<double> seen;
   std::vector<std::size_t> counts;
@@ -117,7 +117,7 @@ TEST_P(ResumedFromItsCheckpoint, ReadsWhatAStraightRunReads) {
     Keeper(std::vector<double> t, std::vector<Snapshot>& out) : times_(std::move(t)), out_(out) {}
     std::string name() const override { return "keeper"; }
     std::vector<double> wanted_times() const override { return times_; }
-    void observe(const Snapshot& s) override { out_.push_back(s); }
+    void observe(double time, const Particles& p) override { out_.push_back(Snapshot{time, p}); }
 
    private:
     std::vector<double> times_;

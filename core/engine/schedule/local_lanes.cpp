@@ -127,7 +127,7 @@ void LocalStepper::take_lanes(double target) {
 double LocalStepper::idle_horizon(double target) {
   const std::size_t share = std::max<std::size_t>(1, kIdleStepSyncs / lanes_.size());
   double horizon = target;
-  std::vector<Sync> looked;
+  std::vector<Sync>& looked = looked_;
   for (Lane& lane : lanes_) {
     looked.clear();
     while (looked.size() < share && !lane.syncs.empty() && lane.syncs.front().first <= horizon) {

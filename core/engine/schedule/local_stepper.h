@@ -179,6 +179,7 @@ class LocalStepper {
   // Syncs in a round from which the lanes go on threads (bench: sedem_bench_scale --threads).
   static constexpr std::size_t kThreadedSyncs = 64;
   std::vector<Lane::Leaving> leaving_;  // scratch of take_lanes
+  std::vector<Sync> looked_;            // scratch of idle_horizon
   BoxRegistry boxes_;
   std::vector<std::uint32_t> wake_, failed_;  // scratch
   struct Ahead {
