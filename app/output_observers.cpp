@@ -106,11 +106,12 @@ RunObservers make_observers(const Scene& scene, const Sample& sample,
     r.all.push_back(std::move(columns));
   }
   if (start.write_particles) {
-    // The snapshots that observers which accumulate read are saved in any case: a resumed run
-    // replays them (particle files off: in replay/, removed when the run completes).
+    // The snapshots that observers which accumulate without a state of their own read are
+    // saved in any case: a resumed run replays them (particle files off: in replay/, removed
+    // when the run completes). The instruments keep theirs in the checkpoint.
     std::vector<std::vector<double>> lists;
     for (const auto& o : r.all)
-      if (o->accumulates()) lists.push_back(o->wanted_times());
+      if (o->accumulates() && !o->keeps_state()) lists.push_back(o->wanted_times());
     if (scene.output.particles) lists.push_back(every(scene.output.interval, scene.end_time));
     if (!lists.empty())
       r.all.push_back(std::make_unique<ParticleSeriesObserver>(

@@ -256,6 +256,12 @@ int run_in(const RunOptions& options, const RunHooks& hooks, RunContext& ctx) {
   for (Observer* o : hooks.observers) simulation.watch(*o);
   if (resuming) {
     try {
+      simulation.restore_observers();
+    } catch (const std::exception& e) {
+      std::cerr << "sedem: cannot resume: " << e.what() << '\n';
+      return exit_code::invalid_scene;
+    }
+    try {
       replay(simulation, replay_folder(scene, out));
     } catch (const std::exception& e) {
       std::cerr << "sedem: cannot resume: the saved series is damaged: " << e.what() << '\n';

@@ -145,9 +145,14 @@ std::size_t Engine::bytes() const {
 }
 
 void Engine::save_checkpoint(const std::string& path) const {
-  const EngineParts& e = *parts_;
   std::ofstream out(path, std::ios::binary);
   if (!out) throw std::runtime_error("cannot write checkpoint " + path);
+  save_checkpoint(out);
+  if (!out) throw std::runtime_error("failed writing checkpoint " + path);
+}
+
+void Engine::save_checkpoint(std::ostream& out) const {
+  const EngineParts& e = *parts_;
   out.write(kMagic, sizeof kMagic);
   write_value(out, std::uint64_t(e.state.size()));
   write_value(out, e.time);
@@ -163,12 +168,17 @@ void Engine::save_checkpoint(const std::string& path) const {
             std::streamsize(count * sizeof(PairHistory::Entry)));
   e.integrator->save(out);
   if (local_) local_->save(out);
-  if (!out) throw std::runtime_error("failed writing checkpoint " + path);
 }
 
 void Engine::load_checkpoint(const std::string& path) {
-  EngineParts& e = *parts_;
   std::ifstream in(path, std::ios::binary);
+  load_checkpoint(in, path);
+  if (in.peek() != std::char_traits<char>::eof())
+    throw std::runtime_error("damaged checkpoint " + path + ": data after its end");
+}
+
+void Engine::load_checkpoint(std::istream& in, const std::string& path) {
+  EngineParts& e = *parts_;
   char magic[sizeof kMagic];
   in.read(magic, sizeof magic);
   if (!in || std::memcmp(magic, kMagic, sizeof kMagic) != 0)
@@ -241,8 +251,6 @@ void Engine::load_checkpoint(const std::string& path) {
   e.integrator->load(in);
   if (local_) local_->load(in);
   if (!in) throw std::runtime_error("truncated checkpoint " + path);
-  if (in.peek() != std::char_traits<char>::eof())
-    throw std::runtime_error("damaged checkpoint " + path + ": data after its end");
   // The lists as they were: built from the saved build positions, in the saved order.
   if (!e.lists.stale) e.lists.rebuild_at_build_positions(e.state, e.grid, e.local);
   synced_step_ = -1;

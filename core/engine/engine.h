@@ -12,6 +12,7 @@
 // the lowest instrument are frozen. A blow-up throws InstabilityError.
 
 #include <cstdint>
+#include <iosfwd>
 #include <memory>
 #include <string>
 
@@ -49,6 +50,10 @@ class Engine {
   // step rule): resuming with the same scene, sample and thread count continues bit for bit.
   void save_checkpoint(const std::string& path) const;
   void load_checkpoint(const std::string& path);
+  // The same into and from a stream that may hold more after it (the observers' state);
+  // `name` is the file's, for the errors.
+  void save_checkpoint(std::ostream& out) const;
+  void load_checkpoint(std::istream& in, const std::string& name);
 
   const char* integrator_name() const;
   int threads() const;

@@ -117,11 +117,11 @@ bool EngineRunner::ended() const {
   return done_ && queue_.empty();
 }
 
-void EngineRunner::checkpoint(const std::string& path) {
+void EngineRunner::checkpoint(std::ostream& out) {
   std::lock_guard lock(mutex_);
   if (!(resting_ || done_ || state_ == State::idle))
     throw std::logic_error("checkpoint needs a paused or ended run");
-  engine_.save_checkpoint(path);
+  engine_.save_checkpoint(out);
 }
 
 EngineRunner::State EngineRunner::state() const {

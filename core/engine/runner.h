@@ -12,6 +12,7 @@
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
+#include <iosfwd>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -53,7 +54,7 @@ class EngineRunner {
   };
   Progress progress() const { return {progress_time_.load(), progress_steps_.load()}; }
   // Saves the engine's state; only while paused or after the run has ended.
-  void checkpoint(const std::string& path);
+  void checkpoint(std::ostream& out);
 
   State state() const;
   std::string error() const;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace sedem {
 
@@ -13,7 +15,34 @@ bool due(const std::vector<double>& times, double t) {
   });
 }
 
+// Readings restored for one test: its first reading times, in order.
+template <class Reading>
+void check_restored(const std::vector<Reading>& readings, bool on, const std::vector<double>& times,
+                    const char* test) {
+  if (readings.empty()) return;
+  if (!on) throw std::runtime_error(std::string("readings of the ") + test + ", which is off");
+  if (readings.size() > times.size())
+    throw std::runtime_error(std::to_string(readings.size()) + " readings of the " + test +
+                             ", which reads " + std::to_string(times.size()) + " times");
+  for (std::size_t k = 0; k < readings.size(); ++k)
+    if (!due({times[k]}, readings[k].time))
+      throw std::runtime_error(std::string("a reading of the ") + test + " at " +
+                               std::to_string(readings[k].time) + " s, where it reads at " +
+                               std::to_string(times[k]) + " s");
+}
+
 }  // namespace
+
+void InstrumentPanel::restore(std::vector<HydrometerReading> hydrometer,
+                              std::vector<BuoyancyReading> buoyancy,
+                              std::vector<PipetteReading> pipette) {
+  check_restored(hydrometer, hydrometer_on_, hydrometer_times_, "hydrometer");
+  check_restored(buoyancy, buoyancy_on_, buoyancy_times_, "buoyancy sphere");
+  check_restored(pipette, pipette_on_, pipette_times_, "pipette");
+  hydrometer_readings_ = std::move(hydrometer);
+  buoyancy_readings_ = std::move(buoyancy);
+  pipette_readings_ = std::move(pipette);
+}
 
 InstrumentPanel::InstrumentPanel(const TestSetup& setup, const Sample& sample)
     : hydrometer_on_(setup.instruments.hydrometer),

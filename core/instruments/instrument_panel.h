@@ -38,6 +38,13 @@ class InstrumentPanel {
   // The tests read so far, enabled ones only, in the order hydrometer, buoyancy, pipette.
   std::vector<TestReadings> readings() const;
   const std::vector<HydrometerReading>& hydrometer_readings() const { return hydrometer_readings_; }
+  const std::vector<BuoyancyReading>& buoyancy_readings() const { return buoyancy_readings_; }
+  const std::vector<PipetteReading>& pipette_readings() const { return pipette_readings_; }
+  // A resumed run's readings so far (InstrumentObserver::load_state): each test's are the
+  // first of its reading times, in order, and only an enabled test has any. Throws
+  // std::runtime_error naming the test and the time that does not fit.
+  void restore(std::vector<HydrometerReading> hydrometer, std::vector<BuoyancyReading> buoyancy,
+               std::vector<PipetteReading> pipette);
 
  private:
   void read_fields(double time, const LayerFields& fields);

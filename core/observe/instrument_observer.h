@@ -31,6 +31,10 @@ class InstrumentObserver : public Observer {
   std::vector<double> wanted_times() const override { return times_; }
   void observe(double time, const Particles& particles) override;
   bool accumulates() const override { return true; }
+  // Its readings and profiles so far go into the run's checkpoint (instrument_state.h).
+  bool keeps_state() const override { return true; }
+  void save_state(std::ostream& out) const override;
+  void load_state(std::istream& in) override;
 
   // The readings taken so far against the reference at the same times, with at most
   // `max_profiles` of the profiles, spread evenly over them (spread_indices).

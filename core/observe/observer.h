@@ -1,5 +1,6 @@
 #pragma once
 
+#include <iosfwd>
 #include <memory>
 #include <string>
 #include <vector>
@@ -29,6 +30,14 @@ class Observer {
   // profiles): a resumed run shows it the saved snapshots again before going on. A writer
   // of per-snapshot files returns false: its files are already there.
   virtual bool accumulates() const { return false; }
+  // An observer that accumulates little (readings, profiles) keeps it in the run's checkpoint
+  // instead: a resumed run restores it and shows it no saved snapshot again. (The snapshots a
+  // replay needs were written at every reading, compressed: at a million particles a fifth of
+  // a run's time, at ten million gigabytes.) load_state throws std::runtime_error naming what
+  // it found damaged.
+  virtual bool keeps_state() const { return false; }
+  virtual void save_state(std::ostream&) const {}
+  virtual void load_state(std::istream&) {}
 };
 
 // Output times every `interval` from 0 to `end` inclusive (the last one at `end` exactly).

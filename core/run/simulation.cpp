@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <exception>
+#include <fstream>
+#include <stdexcept>
 #include <string>
 
 #include "core/engine/engine.h"
@@ -33,12 +35,39 @@ const Particles& Simulation::particles() const {
 int Simulation::threads() const {
   return engine_->threads();
 }
+void Simulation::write_checkpoint(const std::string& path,
+                                  const std::function<void(std::ostream&)>& engine) const {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw std::runtime_error("cannot write checkpoint " + path);
+  engine(out);
+  observers_.save_state(out);
+  out.flush();
+  if (!out) throw std::runtime_error("failed writing checkpoint " + path);
+}
+
 void Simulation::save_checkpoint(const std::string& path) const {
-  engine_->save_checkpoint(path);
+  write_checkpoint(path, [&](std::ostream& out) { engine_->save_checkpoint(out); });
 }
 
 void Simulation::resume(const std::string& checkpoint) {
-  engine_->load_checkpoint(checkpoint);
+  std::ifstream in(checkpoint, std::ios::binary);
+  engine_->load_checkpoint(in, checkpoint);
+  checkpoint_ = checkpoint;
+  observers_at_ = in.tellg();
+}
+
+void Simulation::restore_observers() {
+  if (checkpoint_.empty()) return;
+  std::ifstream in(checkpoint_, std::ios::binary);
+  in.seekg(observers_at_);
+  try {
+    observers_.load_state(in);
+  } catch (const std::exception& e) {
+    throw std::runtime_error("damaged checkpoint " + checkpoint_ + ": " + e.what());
+  }
+  if (in.peek() != std::char_traits<char>::eof())
+    throw std::runtime_error("damaged checkpoint " + checkpoint_ + ": data after its end");
+  checkpoint_.clear();
 }
 
 namespace {
@@ -114,7 +143,9 @@ RunEnd Simulation::run(const RunControl& control) {
       // Taking a snapshot off a full queue wakes the engine for a moment before it rests on
       // the pause again: wait for that rest, or the checkpoint would find it stepping.
       runner.pause();
-      checkpoints.take([&](const std::string& path) { runner.checkpoint(path); });
+      checkpoints.take([&](const std::string& path) {
+        write_checkpoint(path, [&](std::ostream& out) { runner.checkpoint(out); });
+      });
       runner.resume();
     }
     auto snapshot = runner.next(poll);
@@ -153,7 +184,7 @@ RunEnd Simulation::run_in_place(const RunControl& control) {
       // Every observer has seen every time before the engine's: a resumed run replays those
       // and goes on from the saved state.
       if (checkpoints.due())
-        checkpoints.take([&](const std::string& path) { engine_->save_checkpoint(path); });
+        checkpoints.take([&](const std::string& path) { save_checkpoint(path); });
       try {
         engine_->step(t);
       } catch (const std::exception& e) {  // an instability, memory: the run ends here

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstddef>
 #include <functional>
+#include <iosfwd>
 #include <memory>
 #include <string>
 #include <vector>
@@ -66,16 +67,21 @@ class Simulation {
   const EngineStats& stats() const;
   const Particles& particles() const;
   int threads() const;  // the engine's
-  // The engine's whole state: a Simulation of the same scene and sample that resumes from it
+  // The engine's whole state, then the state of the observers that keep one
+  // (Observer::keeps_state): a Simulation of the same scene and sample that resumes from it
   // goes on bit for bit.
   void save_checkpoint(const std::string& path) const;
 
   // An observer looks at the run from now on; the caller keeps it alive while it does.
   void watch(Observer& observer) { observers_.add(observer); }
   const ObserverSet& observers() const { return observers_; }
-  // Goes on from a checkpoint this scene and sample wrote (Engine::save_checkpoint). The
-  // observers that accumulate are then shown the saved snapshots before it (observers().replay).
+  // Goes on from a checkpoint this scene and sample wrote (save_checkpoint). The observers
+  // that keep a state get it back once they are watched (restore_observers); those that
+  // accumulate without one are shown the saved snapshots before it (observers().replay).
   void resume(const std::string& checkpoint);
+  // After resume, once every observer is watched: restores the states the checkpoint holds.
+  // Throws std::runtime_error naming the observer whose state is missing or damaged.
+  void restore_observers();
 
   // The engine on a thread of its own, the observers on the calling thread in time order,
   // through every observer's time to the scene's end. Snapshots taken before a stop are shown
@@ -95,7 +101,12 @@ class Simulation {
 
  private:
   std::vector<double> remaining_times() const;
+  // Writes the checkpoint file: `engine` writes the engine's part to the stream.
+  void write_checkpoint(const std::string& path,
+                        const std::function<void(std::ostream&)>& engine) const;
   Scene scene_;
+  std::string checkpoint_;           // the checkpoint resumed from, until restore_observers
+  std::streamoff observers_at_ = 0;  // where its observers' state begins
   std::unique_ptr<Engine> engine_;
   ObserverSet observers_;
   std::size_t peak_engine_bytes_ = 0;

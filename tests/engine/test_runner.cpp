@@ -2,6 +2,7 @@
 // and checkpoint + resume giving the same bits as an uninterrupted run.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <random>
 
 #include "core/engine/runner.h"
@@ -72,7 +73,10 @@ TEST(EngineRunner, CheckpointAndResumeGiveTheSameBits) {
     auto snap = runner.next();  // 0.01
     ASSERT_TRUE(snap);
     runner.pause();
-    runner.checkpoint(path);
+    {
+      std::ofstream out(path, std::ios::binary);
+      runner.checkpoint(out);
+    }
     runner.stop();
   }
   Engine resumed(engine_setup(scene), sample_of(heap()));

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -143,13 +144,39 @@ TEST_P(ResumedFromItsCheckpoint, ReadsWhatAStraightRunReads) {
   resumed.watch(instruments);
   resumed.resume(checkpoint);
   EXPECT_GE(resumed.time(), stopped_at);
-  ASSERT_TRUE(resumed.observers().needs_replay(resumed.time()));
-  for (const Snapshot& s : saved)
-    if (s.time < resumed.time()) resumed.observers().replay(s);
+  // The instruments' readings so far come back from the checkpoint: no snapshot is replayed.
+  resumed.restore_observers();
+  EXPECT_FALSE(resumed.observers().needs_replay(resumed.time()));
+  EXPECT_FALSE(instruments.results().granulometry.tests.empty());
   ASSERT_TRUE(resumed.run().completed);
 
   const SimulationRun straight = simulate(scene, build_sample(sample_setup(scene)));
   EXPECT_EQ(dem_percent(instruments.results()), dem_percent(straight.results));
+
+  // A checkpoint cut short in the instruments' part, or with bytes after it, is refused with
+  // what is wrong, once the observers are to be restored.
+  const auto size = std::filesystem::file_size(checkpoint);
+  for (const bool cut : {true, false}) {
+    const std::string damaged = checkpoint + (cut ? ".cut" : ".long");
+    std::filesystem::copy_file(checkpoint, damaged,
+                               std::filesystem::copy_options::overwrite_existing);
+    if (cut)
+      std::filesystem::resize_file(damaged, size - 12);
+    else
+      std::ofstream(damaged, std::ios::binary | std::ios::app) << "extra";
+    Simulation again(scene);
+    InstrumentObserver watching(test_setup(scene), again.sample());
+    again.watch(watching);
+    again.resume(damaged);
+    try {
+      again.restore_observers();
+      ADD_FAILURE() << "a damaged checkpoint was restored: " << damaged;
+    } catch (const std::runtime_error& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("damaged checkpoint"), std::string::npos) << what;
+      EXPECT_NE(what.find(cut ? "truncated" : "after its end"), std::string::npos) << what;
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Simulation, ResumedFromItsCheckpoint, ::testing::Values(1, 0));
