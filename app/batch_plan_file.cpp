@@ -1,9 +1,12 @@
 #include "app/batch_plan_file.h"
 
 #include <fstream>
+#include <limits>
 
 #include <nlohmann/json.hpp>
 
+#include "app/json_fields.h"
+#include "app/run_folder.h"
 #include "render/atomic_write.h"
 
 namespace sedem::app {
@@ -52,36 +55,54 @@ BatchPlan read_plan_file(const fs::path& dir) {
     throw PlanFileError(file.string() +
                         ": cannot read it (a folder written by sedem batch --emit holds it)");
   const auto j = nlohmann::json::parse(in, nullptr, false);
-  if (j.is_discarded() || !j.is_object() || j.value("format", "") != kFormat)
+  const auto format = j.is_object() ? j.find("format") : j.end();
+  if (j.is_discarded() || !j.is_object() || format == j.end() || *format != kFormat)
     throw PlanFileError(file.string() + ": not a batch plan written by sedem batch --emit");
-  if (j.value("format_version", 0) != kFormatVersion)
+  const auto version = j.find("format_version");
+  if (version == j.end() || *version != kFormatVersion)
     throw PlanFileError(file.string() + ": a plan of format version " +
-                        j.value("format_version", nlohmann::json(0)).dump() +
+                        (version == j.end() ? "(none)" : json_quoted(*version)) +
                         "; this sedem reads version " + std::to_string(kFormatVersion));
+  // Every key read with its name: a plan edited by hand or cut short by a full disk is
+  // refused naming the key and what it holds, never read as something else.
+  constexpr auto kMostSeed = std::numeric_limits<std::int64_t>::max();
   BatchPlan plan;
   try {
     plan.options.out_dir = dir.string();
-    plan.options.scheduler = j.at("emit").get<std::string>();
-    plan.options.sweep = j.at("sweep").get<std::string>();
-    if (!j.at("seeds").is_null()) plan.options.seeds = j["seeds"].get<int>();
-    if (!j.at("seed0").is_null()) plan.options.seed0 = j["seed0"].get<std::int64_t>();
-    for (const auto& r : j.at("runs")) {
+    plan.options.scheduler = json_string(json_key(j, "emit", ""), "emit");
+    plan.options.sweep = json_string(json_key(j, "sweep", ""), "sweep");
+    if (const auto seeds = json_optional_integer(json_key(j, "seeds", ""), "seeds", 1,
+                                                 std::numeric_limits<int>::max()))
+      plan.options.seeds = int(*seeds);
+    plan.options.seed0 = json_optional_integer(json_key(j, "seed0", ""), "seed0", 0, kMostSeed);
+    // The bounds a batch's command line has (a plan cannot ask for more seeds than it could).
+    if (const std::string why = seed_options_error(plan.options); !why.empty())
+      throw std::invalid_argument("seeds, seed0: " + why);
+    const auto& runs = json_key(j, "runs", "");
+    if (!runs.is_array() || runs.empty())
+      throw std::invalid_argument("runs: expected a list of one or more runs, found " +
+                                  json_quoted(runs));
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      const auto& r = runs[i];
+      const std::string at = "runs[" + std::to_string(i) + "]";
       BatchRun run;
-      run.folder = r.at("folder").get<std::string>();
-      run.scene = r.at("scene").get<std::string>();
-      run.group = r.at("group").get<std::string>();
-      run.value = r.at("value").get<std::string>();
-      if (!r.at("seed").is_null()) run.seed = r["seed"].get<std::int64_t>();
-      run.overrides = r.at("overrides").get<std::vector<std::string>>();
-      // A folder is one path component inside the batch's: a damaged or edited plan cannot
-      // send the summary elsewhere.
-      if (run.folder.empty() || run.folder.find('/') != std::string::npos || run.folder == "." ||
-          run.folder == "..")
-        throw PlanFileError(file.string() + ": the run folder \"" + run.folder +
-                            "\" is not one folder inside the batch's");
+      run.folder = json_string(json_key(r, "folder", at), at + ".folder");
+      run.scene = json_string(json_key(r, "scene", at), at + ".scene");
+      run.group = json_string(json_key(r, "group", at), at + ".group");
+      run.value = json_string(json_key(r, "value", at), at + ".value");
+      run.seed = json_optional_integer(json_key(r, "seed", at), at + ".seed", 0, kMostSeed);
+      run.overrides = json_strings(json_key(r, "overrides", at), at + ".overrides");
+      // A folder is one path component inside the batch's, named as plan_batch names it: a
+      // damaged or edited plan cannot send the summary elsewhere (nor into a name a terminal
+      // or a shell would mangle).
+      if (run.folder != safe_folder_name(run.folder))
+        throw std::invalid_argument(at + ".folder: " + json_quoted(json_key(r, "folder", at)) +
+                                    " is not one folder inside the batch's");
       plan.runs.push_back(std::move(run));
     }
-  } catch (const nlohmann::json::exception& e) {
+  } catch (const std::invalid_argument& e) {
+    throw PlanFileError(file.string() + ": " + e.what());
+  } catch (const nlohmann::json::exception& e) {  // none expected: the reads above check first
     throw PlanFileError(file.string() + ": " + e.what());
   }
   return plan;

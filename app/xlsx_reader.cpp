@@ -221,7 +221,8 @@ LabTable read_xlsx_table(const std::filesystem::path& file, const std::string& s
                                 "' has no part (damaged)");
   const auto strings = shared_strings(*archive);
   LabTable table;
-  table.place = "row";
+  // A spreadsheet's user looks for a sheet and a row, not a line.
+  table.place = "sheet '" + chosen->name + "', row";
   table.decimal_comma = true;
   QXmlStreamReader xml(read_part(*archive, chosen->target));
   std::size_t row_number = 0;
@@ -241,7 +242,7 @@ LabTable read_xlsx_table(const std::filesystem::path& file, const std::string& s
                         "more than " + std::to_string(kMaxLabRows) +
                             " readings; a laboratory test has a few dozen: is this the right "
                             "sheet?",
-                        "row");
+                        table.place);
     table.rows.push_back(cells);
     table.lines.push_back(row_number);
   };
@@ -264,8 +265,7 @@ LabTable read_xlsx_table(const std::filesystem::path& file, const std::string& s
   }
   check(xml, chosen->target);
   if (table.header.empty())
-    throw LabCsvError(row_number, "", "no header: the sheet '" + chosen->name + "' is empty",
-                      "row");
+    throw LabCsvError(row_number, "", "no header: the sheet is empty", table.place);
   return table;
 }
 

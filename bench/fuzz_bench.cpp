@@ -1,10 +1,12 @@
 // Hostile input against `sedem`: seeded mutations of the shipped scenes, of --set values, of
 // laboratory CSVs for `sedem reduce` and `sedem invert` and sieve analyses (random rows, NaN, inf,
 // huge and tiny values, CR/LF mixes, empty and header-only files), of a run folder for `sedem
-// render` (a .vtp, particles.pvd or run.json cut short or changed) and of a checkpoint for `sedem
-// run --resume`. Every case must end in exit 2 naming what is wrong, or in a run (or reduction,
-// inversion, redrawing) whose outputs hold no NaN or inf; never a crash, a hang or another exit
-// code. The test suite runs a few cases of each kind (seconds); run it longer with
+// render` (a .vtp, particles.pvd or run.json cut short or changed), of a checkpoint for `sedem
+// run --resume` and of a batch's plan (batch.json: cut short, keys of the wrong type, missing,
+// huge numbers, folders outside the batch's) for `sedem batch --gather`. Every case must end in
+// exit 2 naming what is wrong, or in a run (or reduction, inversion, redrawing, summary) whose
+// outputs hold no NaN or inf; never a crash, a hang or another exit code. The test suite runs a few
+// cases of each kind (seconds); run it longer with
 //   build/bench/sedem_bench_fuzz --cases 2000 --seed 7
 // Prints the counts and exits 1 if any case failed.
 #include <sys/wait.h>
@@ -22,6 +24,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "core/scene/scene.h"
 
@@ -252,6 +255,38 @@ void damage_file(const fs::path& file, std::mt19937_64& rng) {
   out << bytes;
 }
 
+// A batch's plan (batch.json) damaged: one key of the plan or of a run made hostile (a value of
+// another type, a huge number, a folder outside the batch's) or removed. `key` receives the key as
+// the reader names it ("seeds", "runs[1].seed").
+std::string mutate_plan(const std::string& text, std::mt19937_64& rng, std::string& key) {
+  key.clear();
+  auto plan = nlohmann::json::parse(text);
+  auto& runs = plan["runs"];
+  const std::size_t run = rng() % runs.size();
+  const bool top = rng() % 3 == 0;
+  auto& object = top ? plan : runs[run];
+  std::vector<std::string> keys;
+  for (const auto& item : object.items()) keys.push_back(item.key());
+  const std::string name = keys[rng() % keys.size()];
+  key = top ? name : "runs[" + std::to_string(run) + "]." + name;
+  if (rng() % 4 == 0) {
+    object.erase(name);
+    return plan.dump(2);
+  }
+  // Put a marker in and replace it by the hostile text: not every hostile value is JSON.
+  static const std::vector<std::string> kOutside = {
+      "\"..\"",     "\".\"",          "\"\"",
+      "\"/tmp\"",   "\"../outside\"", "\"a/b\"",
+      "\"a\\\\b\"", "\"\\n\"",        "18446744073709551615",
+      "1e400",      "2147483648",     "-9223372036854775809"};
+  const std::string value = rng() % 3 == 0 ? kOutside[rng() % kOutside.size()] : mutate_value(rng);
+  object[name] = "@@hostile@@";
+  std::string out = plan.dump(2);
+  const std::string marker = "\"@@hostile@@\"";
+  out.replace(out.find(marker), marker.size(), value);
+  return out;
+}
+
 // A short, small run of any scene: the fuzzed value decides, not the run's length.
 const char* kShort =
     " --set run.end_time_s=1 --set output.frames=false --set output.particles=false"
@@ -305,7 +340,7 @@ int main(int argc, char** argv) {
   std::string out_dir = "fuzz-out";
   int timeout = 60;
   cli.add_option("--cases", cases,
-                 "Cases of each kind (--set, scene, reduce, invert, render, resume)")
+                 "Cases of each kind (--set, scene, reduce, invert, render, resume, gather)")
       ->capture_default_str();
   cli.add_option("--seed", seed, "Random seed")->capture_default_str();
   cli.add_option("--sedem", sedem, "The sedem executable")->capture_default_str();
@@ -477,6 +512,48 @@ int main(int argc, char** argv) {
     damage_file(victim, rng);
     const auto o = shell(sedem + " run --resume " + dir.string() + " --quiet", timeout);
     check_run(t, "run --resume with " + victim.filename().string() + " damaged", o, dir, "");
+  }
+
+  // 7. A batch's plan for `sedem batch --gather`, damaged; the batch's runs are complete, so
+  // an exit 2 is the plan's fault and names it (and the key, when the plan still parses), or
+  // the runs a damaged plan names instead are missing. The tasks themselves read their own
+  // scene (tasks/RUN.toml), not the plan.
+  const fs::path batch = scratch / "batch";
+  fs::remove_all(batch);
+  const auto emitted =
+      shell(sedem + " batch " + (fs::path(SEDEM_SOURCE_DIR) / "scenes/demo.toml").string() +
+                " --seeds 2 --emit parallel --out " + batch.string() + kShort + " && " +
+                (batch / "tasks/run_task.sh").string() + " demo__seed=1 && " +
+                (batch / "tasks/run_task.sh").string() + " demo__seed=2 && " + sedem +
+                " batch --gather " + batch.string() + " --quiet",
+            timeout);
+  if (emitted.status != 0) {
+    std::printf("sedem fuzz: the batch to damage failed: %s\n", emitted.output.c_str());
+    return 1;
+  }
+  const std::string plan_text = text_of(batch / "batch.json");
+  for (int i = 0; i < cases; ++i) {
+    std::string key;
+    {
+      const std::string damaged = mutate_plan(plan_text, rng, key);
+      std::ofstream out(batch / "batch.json", std::ios::binary | std::ios::trunc);
+      out << damaged;
+    }
+    // And its text, maybe: then any key may be the one named, or none if it no longer parses.
+    const bool text_damaged = rng() % 3 == 0;
+    if (text_damaged) damage_file(batch / "batch.json", rng);
+    const fs::path kept = scratch / ("batch_" + std::to_string(i) + ".json");
+    fs::copy_file(batch / "batch.json", kept, fs::copy_options::overwrite_existing);
+    const auto o = shell(sedem + " batch --gather " + batch.string() + " --quiet", timeout);
+    const std::string what = "batch --gather with batch.json damaged (" + kept.string() + ")";
+    check_run(t, what, o, batch, "");
+    const auto says = [&](const std::string& s) { return o.output.find(s) != std::string::npos; };
+    if (o.status == 2 && !says("did not complete") &&
+        !(says("batch.json: ") &&
+          (text_damaged || says(key) || says("not a batch plan") || says("format version")))) {
+      ++t.unnamed;
+      t.fail(what, "exit 2 without naming batch.json and " + key + ": " + o.output);
+    }
   }
 
   std::printf(

@@ -11,14 +11,18 @@ namespace sedem {
 namespace {
 
 std::string describe_invalid(std::size_t row, const std::string& field, double value,
-                             const std::string& why, std::size_t line) {
+                             const std::string& why, std::size_t line, const std::string& place) {
+  // A sheet's row is what its user looks for; a text file's line is said after the row.
+  const bool sheet = line > 0 && place != "line";
   std::ostringstream s;
   if (row == InvalidLabReading::kSpecimen)
     s << "specimen";
+  else if (sheet)
+    s << place << " " << line;
   else
     s << "row " << row + 1;
   s << ", " << field << " = " << value << ": " << why;
-  if (line > 0) s << " (line " << line << " of the file)";
+  if (line > 0 && !sheet) s << " (line " << line << " of the file)";
   return s.str();
 }
 
@@ -47,27 +51,28 @@ void check_point(std::size_t row, const LabReading& r, const LabPoint& p, const 
                                 {"effective_depth_m", p.effective_depth}})
     if (!std::isfinite(v))
       throw InvalidLabReading(row, name, v, "the reduction gives no finite number; check the row",
-                              r.line);
+                              r.line, r.place);
   if (p.diameter > kMaxLabDiameter) {
     std::ostringstream why;
     why << "coarser than " << kMaxLabDiameter * 1e3
         << " mm, which no sedimentation test sorts: the reading time (" << r.time / 60.0
         << " min) is too short to be true; check time_min";
-    throw InvalidLabReading(row, "diameter_m", p.diameter, why.str(), r.line);
+    throw InvalidLabReading(row, "diameter_m", p.diameter, why.str(), r.line, r.place);
   }
   if (p.percent_finer > kMaxPercentFiner) {
     std::ostringstream why;
     why << "more than " << kMaxPercentFiner << " % of the specimen cannot be finer; the dry mass ("
         << s.dry_mass * 1e3 << " g) is too small for this reading: check --mass-g";
-    throw InvalidLabReading(row, "percent_finer", p.percent_finer, why.str(), r.line);
+    throw InvalidLabReading(row, "percent_finer", p.percent_finer, why.str(), r.line, r.place);
   }
 }
 
 }  // namespace
 
 InvalidLabReading::InvalidLabReading(std::size_t row, std::string field, double value,
-                                     const std::string& why, std::size_t line)
-    : std::invalid_argument(describe_invalid(row, field, value, why, line)),
+                                     const std::string& why, std::size_t line,
+                                     const std::string& place)
+    : std::invalid_argument(describe_invalid(row, field, value, why, line, place)),
       row_(row),
       field_(std::move(field)),
       value_(value) {}
@@ -88,28 +93,30 @@ void validate_lab_readings(const std::vector<LabReading>& readings, const LabSpe
   for (std::size_t i = 0; i < n; ++i) {
     const auto& r = readings[i];
     if (!(r.time > 0) || !std::isfinite(r.time))
-      throw InvalidLabReading(i, "time_s", r.time, "times must be positive and finite", r.line);
+      throw InvalidLabReading(i, "time_s", r.time, "times must be positive and finite", r.line,
+                              r.place);
     if (i > 0 && !(r.time > readings[i - 1].time))
       throw InvalidLabReading(
           i, "time_s", r.time,
           "times must increase (previous row: " + std::to_string(readings[i - 1].time) + " s)",
-          r.line);
+          r.line, r.place);
     if (!(r.reading >= -5 && r.reading <= 60))
       throw InvalidLabReading(i, "reading_g_per_l", r.reading, "off the 152H scale (-5 to 60 g/L)",
-                              r.line);
+                              r.line, r.place);
     if (!(r.temperature >= 0 && r.temperature <= 40))
       throw InvalidLabReading(i, "temperature_c", r.temperature,
-                              "outside 0-40 C, where the water density formula holds", r.line);
+                              "outside 0-40 C, where the water density formula holds", r.line,
+                              r.place);
     if (!(std::abs(r.composite_correction) <= kMaxCompositeCorrection))
       throw InvalidLabReading(i, "composite_correction_g_per_l", r.composite_correction,
                               "must be a number between -65 and 65 g/L (a correction wider than "
                               "the whole 152H scale is no correction)",
-                              r.line);
+                              r.line, r.place);
     if (!(r.meniscus_correction >= 0 && r.meniscus_correction <= kMaxMeniscusCorrection))
       throw InvalidLabReading(i, "meniscus_correction_g_per_l", r.meniscus_correction,
                               "must be between 0 and 5 g/L (the top of the meniscus reads low "
                               "by about 1 g/L on a 152H)",
-                              r.line);
+                              r.line, r.place);
   }
 }
 

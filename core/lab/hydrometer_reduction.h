@@ -16,6 +16,7 @@ struct LabReading {
   double meniscus_correction = 0;   // C_m, g/L: what the top of the meniscus reads low; the
                                     // effective depth is the 152H's at R + C_m
   std::size_t line = 0;             // the line of the file it was read from; 0: none
+  std::string place = "line";       // how messages name `line` (LabTable::place)
 };
 
 // The widest composite correction accepted, g/L (the 152H's scale spans 65 g/L), and the
@@ -56,12 +57,14 @@ struct LabPoint {
 
 // A reading that cannot be reduced: names the row, the field and the value. row() is
 // 0-based (kSpecimen for the specimen's fields); the message counts rows from 1 and adds the
-// file's line when the reading was read from one (LabReading::line).
+// file's line when the reading was read from one (LabReading::line). A reading from a
+// workbook's sheet is named by the sheet and its row there instead (`place` other than
+// "line"): the sheet's row numbers are the ones its user sees, and two "row"s would confuse.
 class InvalidLabReading : public std::invalid_argument {
  public:
   static constexpr std::size_t kSpecimen = static_cast<std::size_t>(-1);
   InvalidLabReading(std::size_t row, std::string field, double value, const std::string& why,
-                    std::size_t line = 0);
+                    std::size_t line = 0, const std::string& place = "line");
   std::size_t row() const { return row_; }
   const std::string& field() const { return field_; }
   double value() const { return value_; }

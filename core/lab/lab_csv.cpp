@@ -33,7 +33,7 @@ std::vector<LabReading> read_lab_readings(const LabTable& table) {
     check_lab_time_min(lines[i], v[0], table.place);
     // NaN here only for an optional column the header lacks: no correction.
     readings.push_back({v[0] * 60.0, v[1], v[2], std::isnan(v[3]) ? 0.0 : v[3],
-                        std::isnan(v[4]) ? 0.0 : v[4], lines[i]});
+                        std::isnan(v[4]) ? 0.0 : v[4], lines[i], table.place});
   }
   return readings;
 }

@@ -12,7 +12,8 @@ namespace sedem {
 // sheet's row) and the column.
 class LabCsvError : public std::invalid_argument {
  public:
-  // `place`: how the message names where: "line" (a text file) or "row" (a sheet's row).
+  // `place`: how the message names where, before the number: "line" (a text file) or
+  // LabTable::place of a sheet ("sheet 'Readings', row"), so a spreadsheet's user finds it.
   LabCsvError(std::size_t line, const std::string& column, const std::string& why,
               const std::string& place = "line");
   std::size_t line() const { return line_; }
@@ -38,7 +39,9 @@ struct LabTable {
   // A cell may write its decimals after a comma ("12,5"): the file is separated by ';' or
   // tabs (as spreadsheets in comma locales write), or is a sheet.
   bool decimal_comma = false;
-  std::string place = "line";  // "line" (text) or "row" (sheet), for LabCsvError
+  // How messages name a row's number: "line" (text), or "sheet 'NAME', row" for a workbook's
+  // sheet (a spreadsheet program numbers rows, not lines, and a workbook has several sheets).
+  std::string place = "line";
 };
 
 // The cell separator of a header line: a tab if it holds one outside quotes, else ';' if it

@@ -56,6 +56,7 @@ SieveAnalysis read_sieve_analysis(const LabTable& table) {
     if (kind != RowKind::total) pan_rows.push_back(kind == RowKind::pan);
   }
   SieveAnalysis out;
+  out.place = table.place;
   std::vector<std::size_t> lines;
   const auto rows = lab_columns(sieves, {"opening_mm", "mass_retained_g"}, {}, &lines);
   auto check_mass = [&](std::size_t line, double g) {
@@ -79,9 +80,10 @@ SieveAnalysis read_sieve_analysis(const LabTable& table) {
                         table.place);
     for (const auto& s : out.sieves)
       if (std::abs(s.opening_mm - d) <= 1e-9 * d)
-        throw LabCsvError(lines[i], "opening_mm",
-                          number(d) + " mm twice (line " + std::to_string(s.line) + ")",
-                          table.place);
+        throw LabCsvError(
+            lines[i], "opening_mm",
+            number(d) + " mm twice (" + table.place + " " + std::to_string(s.line) + ")",
+            table.place);
     out.sieves.push_back({d, g, lines[i]});
   }
   if (out.sieves.empty())
@@ -134,7 +136,8 @@ std::vector<SievePoint> sieve_percent_passing(const SieveAnalysis& analysis,
     if (cumulative > total * 1.001)
       throw std::invalid_argument("the sieves down to " + number(s.opening_mm) + " mm retain " +
                                   number(cumulative) + " g, more than the total dry mass " +
-                                  number(total) + " g (line " + std::to_string(s.line) + ")");
+                                  number(total) + " g (" + analysis.place + " " +
+                                  std::to_string(s.line) + ")");
     out.push_back({s.opening_mm, s.retained_g, cumulative,
                    std::max(0.0, 100.0 * (total - cumulative) / total)});
   }

@@ -20,6 +20,7 @@ struct SieveAnalysis {
   std::vector<Sieve> sieves;      // coarsest first; the pan not among them
   std::optional<double> pan_g;    // the pan's row, if the file has one
   std::optional<double> total_g;  // the total dry mass: the file's "total" row or a flag
+  std::string place = "line";     // how messages name a sieve's line (LabTable::place)
 };
 
 // The widest sieve opening, mm (a 125 mm coarse sieve and then some) and the largest mass, g.

@@ -3,6 +3,7 @@
     make_workbook.py lab.xlsx       # openpyxl: a notes sheet, the readings, the sieves
     make_workbook.py shared.xlsx    # by hand: shared strings, as Excel and LibreOffice save
     make_workbook.py damaged.xlsx   # shared.xlsx with a cell reference past any column
+    make_workbook.py bad.xlsx       # openpyxl: a temperature off the scale, sieves over the total
 
 The first is what openpyxl (Debian's python3-openpyxl 3.0) saves: text as inline strings,
 numbers, empty cells and rows, a text cell with a decimal comma. The second what Excel and
@@ -32,6 +33,24 @@ def lab_workbook(path):
     sieves.append(["Sieve", "Opening (mm)", "Mass retained (g)"])
     for row in [["3/8 in", 9.5, 0], ["#4", 4.75, 12], ["#10", 2, 18], ["#40", 0.425, 30],
                 ["#200", 0.075, 40], ["Pan", None, 100], ["Total", None, 200]]:
+        sieves.append(row)
+    book.save(path)
+
+
+def bad_workbook(path):
+    # Values a reader takes but a reduction refuses: errors must name the sheet and its row.
+    import openpyxl
+
+    book = openpyxl.Workbook()
+    readings = book.active
+    readings.title = "Readings"
+    readings.append(["time (min)", "R (g/L)", "T (\u00b0C)", "C (g/L)"])
+    readings.append([2, 42, 22, 5])
+    readings.append([])  # an empty row: the sheet's row numbers are not the readings' count
+    readings.append([60, 20, 99, 5])  # row 4: 99 C is off the water density formula
+    sieves = book.create_sheet("Sieves")
+    sieves.append(["Opening (mm)", "Mass retained (g)"])
+    for row in [[4.75, 12], [2, 18], [0.425, 30], ["Total", 40]]:  # row 4 passes the total
         sieves.append(row)
     book.save(path)
 
@@ -88,7 +107,9 @@ def shared_workbook(path, damaged=False):
 
 if __name__ == "__main__":
     out = sys.argv[1]
-    if out.endswith("shared.xlsx") or out.endswith("damaged.xlsx"):
+    if out.endswith("bad.xlsx"):
+        bad_workbook(out)
+    elif out.endswith("shared.xlsx") or out.endswith("damaged.xlsx"):
         shared_workbook(out, damaged=out.endswith("damaged.xlsx"))
     else:
         lab_workbook(out)

@@ -64,8 +64,8 @@ TEST(LabFiles, XlsxFromOpenpyxl) {
     read_lab_readings(app::read_xlsx_table(book));
     ADD_FAILURE() << "read the notes as readings";
   } catch (const LabCsvError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind("row 1, column time_min: missing from the header (found "
-                                          "'Sample B-12, 50 g oven-dry, Gs 2.70')",
+    EXPECT_EQ(std::string(e.what()).rfind("sheet 'Notes', row 1, column time_min: missing from the "
+                                          "header (found 'Sample B-12, 50 g oven-dry, Gs 2.70')",
                                           0),
               0u)
         << e.what();
@@ -95,11 +95,42 @@ TEST(LabFiles, XlsxWithSharedStrings) {
     read_lab_readings(app::read_xlsx_table(workbook("damaged.xlsx")));
     ADD_FAILURE() << "read a row without its time";
   } catch (const LabCsvError& e) {
-    EXPECT_STREQ(e.what(), "row 5, column 'elapsed time, s': '' is not a number");
+    EXPECT_STREQ(e.what(),
+                 "sheet 'Hydrometer', row 5, column 'elapsed time, s': '' is not a number");
   }
   // Not a workbook at all.
   const fs::path fake = write("fake.xlsx", "time_min,reading_g_per_l\n");
   EXPECT_THROW(app::read_xlsx_table(fake), std::invalid_argument);
+}
+
+// A value a reduction refuses, read from a workbook, is named by its sheet and the row a
+// spreadsheet program shows (the empty row 3 counted), never by a text file's "line"; the same
+// value in a CSV still names the reading and the file's line.
+TEST(LabFiles, XlsxValueErrorsNameTheSheetAndRow) {
+  const fs::path book = workbook("bad.xlsx");
+  const auto r = test::run_sedem("reduce " + book.string() + " --sheet Readings");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find(book.string() +
+                          ": sheet 'Readings', row 4, temperature_c = 99: outside 0-40 C"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("line"), std::string::npos) << r.output;
+  const auto s =
+      test::run_sedem("reduce " + workbook("lab.xlsx").string() + " --sheet Readings --sieve " +
+                      book.string() + " --sieve-sheet Sieves");
+  EXPECT_EQ(s.status, 2);
+  EXPECT_NE(s.output.find("more than the total dry mass 40 g (sheet 'Sieves', row 4)"),
+            std::string::npos)
+      << s.output;
+  EXPECT_EQ(s.output.find("line"), std::string::npos) << s.output;
+  const fs::path csv =
+      write("hot.csv", "time_min,reading_g_per_l,temperature_c\n2,42,22\n\n60,20,99\n");
+  const auto c = test::run_sedem("reduce " + csv.string());
+  EXPECT_EQ(c.status, 2);
+  EXPECT_NE(c.output.find(": row 2, temperature_c = 99: outside 0-40 C, where the water density "
+                          "formula holds (line 4 of the file)"),
+            std::string::npos)
+      << c.output;
 }
 
 // The same readings as ';' with decimal commas, as tabs and as a workbook: one curve.
