@@ -106,12 +106,14 @@ RunObservers make_observers(const Scene& scene, const Sample& sample,
     r.all.push_back(std::move(columns));
   }
   if (start.write_particles) {
-    // The snapshots that observers which accumulate without a state of their own read are
-    // saved in any case: a resumed run replays them (particle files off: in replay/, removed
-    // when the run completes). The instruments keep theirs in the checkpoint.
+    // The snapshots that observers which accumulate read are saved: a resumed run replays
+    // them, and `sedem render` recomputes everything from the particle series. Particle files
+    // off, only those of observers without a state of their own go to replay/ (removed when
+    // the run completes): the instruments keep theirs in the checkpoint.
     std::vector<std::vector<double>> lists;
     for (const auto& o : r.all)
-      if (o->accumulates() && !o->keeps_state()) lists.push_back(o->wanted_times());
+      if (o->accumulates() && (scene.output.particles || !o->keeps_state()))
+        lists.push_back(o->wanted_times());
     if (scene.output.particles) lists.push_back(every(scene.output.interval, scene.end_time));
     if (!lists.empty())
       r.all.push_back(std::make_unique<ParticleSeriesObserver>(
