@@ -6,6 +6,7 @@
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace sedem::instrument_state {
 
@@ -48,15 +49,45 @@ void take(std::istream& in, std::vector<double>& v, std::size_t longest, const c
   for (double& x : v) x = take(in, what);
 }
 
+// Each record's numbers in one list, which writing and reading both walk: a field added to
+// one direction cannot go missing in the other. `R` is the record, const or not.
+template <class R, class Visit>
+void scalars_of(R& r, Visit&& visit) {
+  using Reading = std::remove_const_t<R>;
+  if constexpr (std::is_same_v<Reading, HydrometerReading>) {
+    for (auto* x : {&r.time, &r.tip_depth, &r.centre_depth, &r.reading, &r.standard_effective_depth,
+                    &r.clear_water_tip_depth, &r.density_eq19, &r.bulb_mean_density, &r.diameter,
+                    &r.percent_finer, &r.percent_finer_bulb_density})
+      visit(*x);
+  } else if constexpr (std::is_same_v<Reading, BuoyancyReading>) {
+    for (auto* x : {&r.time, &r.depth, &r.mean_density, &r.apparent_mass,
+                    &r.clear_water_apparent_mass, &r.diameter, &r.percent_finer})
+      visit(*x);
+  } else {
+    static_assert(std::is_same_v<Reading, PipetteReading>);
+    for (auto* x : {&r.time, &r.depth, &r.radius, &r.concentration, &r.dry_mass, &r.diameter,
+                    &r.percent_finer})
+      visit(*x);
+  }
+}
+
+template <class Reading>
+void write_readings(std::ostream& out, const std::vector<Reading>& v) {
+  put_count(out, v.size());
+  for (const Reading& r : v) scalars_of(r, [&](double x) { put(out, x); });
+}
+
+template <class Reading>
+void read_readings(std::istream& in, std::vector<Reading>& v, std::size_t most, const char* what) {
+  v.resize(take_count(in, most, what));
+  for (Reading& r : v) scalars_of(r, [&](double& x) { x = take(in, what); });
+}
+
 }  // namespace
 
 void write(std::ostream& out, const std::vector<HydrometerReading>& v) {
-  put_count(out, v.size());
+  write_readings(out, v);
   for (const HydrometerReading& r : v) {
-    for (double x : {r.time, r.tip_depth, r.centre_depth, r.reading, r.standard_effective_depth,
-                     r.clear_water_tip_depth, r.density_eq19, r.bulb_mean_density, r.diameter,
-                     r.percent_finer, r.percent_finer_bulb_density})
-      put(out, x);
     put(out, r.on_scale ? 1.0 : 0.0);
     put(out, r.profile_offset);
     put(out, r.profile_density);
@@ -65,14 +96,9 @@ void write(std::ostream& out, const std::vector<HydrometerReading>& v) {
 
 void read(std::istream& in, std::vector<HydrometerReading>& v, std::size_t most,
           std::size_t longest) {
-  v.resize(take_count(in, most, "hydrometer readings"));
+  read_readings(in, v, most, "hydrometer readings");
   for (HydrometerReading& r : v) {
-    for (double* x :
-         {&r.time, &r.tip_depth, &r.centre_depth, &r.reading, &r.standard_effective_depth,
-          &r.clear_water_tip_depth, &r.density_eq19, &r.bulb_mean_density, &r.diameter,
-          &r.percent_finer, &r.percent_finer_bulb_density})
-      *x = take(in, "a hydrometer reading");
-    r.on_scale = take(in, "a hydrometer reading") != 0;
+    r.on_scale = take(in, "hydrometer readings") != 0;
     take(in, r.profile_offset, longest, "bulb profile points");
     take(in, r.profile_density, longest, "bulb profile points");
     if (r.profile_offset.size() != r.profile_density.size())
@@ -81,35 +107,19 @@ void read(std::istream& in, std::vector<HydrometerReading>& v, std::size_t most,
 }
 
 void write(std::ostream& out, const std::vector<BuoyancyReading>& v) {
-  put_count(out, v.size());
-  for (const BuoyancyReading& r : v)
-    for (double x : {r.time, r.depth, r.mean_density, r.apparent_mass, r.clear_water_apparent_mass,
-                     r.diameter, r.percent_finer})
-      put(out, x);
+  write_readings(out, v);
 }
 
 void read(std::istream& in, std::vector<BuoyancyReading>& v, std::size_t most) {
-  v.resize(take_count(in, most, "buoyancy readings"));
-  for (BuoyancyReading& r : v)
-    for (double* x : {&r.time, &r.depth, &r.mean_density, &r.apparent_mass,
-                      &r.clear_water_apparent_mass, &r.diameter, &r.percent_finer})
-      *x = take(in, "a buoyancy reading");
+  read_readings(in, v, most, "buoyancy readings");
 }
 
 void write(std::ostream& out, const std::vector<PipetteReading>& v) {
-  put_count(out, v.size());
-  for (const PipetteReading& r : v)
-    for (double x :
-         {r.time, r.depth, r.radius, r.concentration, r.dry_mass, r.diameter, r.percent_finer})
-      put(out, x);
+  write_readings(out, v);
 }
 
 void read(std::istream& in, std::vector<PipetteReading>& v, std::size_t most) {
-  v.resize(take_count(in, most, "pipette readings"));
-  for (PipetteReading& r : v)
-    for (double* x : {&r.time, &r.depth, &r.radius, &r.concentration, &r.dry_mass, &r.diameter,
-                      &r.percent_finer})
-      *x = take(in, "a pipette reading");
+  read_readings(in, v, most, "pipette readings");
 }
 
 void write(std::ostream& out, const std::vector<LargestDiameterProfile>& v) {
