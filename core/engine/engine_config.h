@@ -32,10 +32,13 @@ struct IntegratorConfig {
   double crossing_fraction = 0.8;      // exponential: dt <= fraction * r / speed, every grain
   double max_step = 1.0;               // s, upper bound on any step
   bool local_steps = true;             // exponential: each free grain on its own window
-  double max_coast = 60.0;             // s, longest window of a coasting grain
-  bool freeze_settled = true;          // freeze resting particles below every instrument
-  bool retire_below = true;  // local steps: grains below every instrument land analytically
-  std::int64_t threads = 0;  // 0: all cores
+  // local steps: a grain held against a coarser one may travel this fraction of the coarser
+  // one's radius a step (0: its own radius limits it, crossing_fraction)
+  double carried_fraction = 0;
+  double max_coast = 60.0;     // s, longest window of a coasting grain
+  bool freeze_settled = true;  // freeze resting particles below every instrument
+  bool retire_below = true;    // local steps: grains below every instrument land analytically
+  std::int64_t threads = 0;    // 0: all cores
 };
 
 // The integrator integrator.method names. Scenes and run records written before the explicit

@@ -59,6 +59,13 @@ void describe(IntegratorConfig& c, Schema& s) {
          "window of its own (space-time boxes keep windows apart), and only grains near a "
          "contact, a wall or the bed share the common step. Off: every grain takes the common "
          "step.");
+  s.number("integrator.carried_fraction", &c.carried_fraction, "", 1, 0, 1,
+           "exponential with local_steps (ignored otherwise): a grain held against a coarser one "
+           "(directly or through other grains) may travel this fraction of the coarsest one's "
+           "radius a step, if that is more than crossing_fraction of its own; every pair that "
+           "could meet still closes by at most its gap plus crossing_fraction of its two radii, "
+           "so none passes through another. 0: every grain is limited by its own radius, and a "
+           "fine grain pushed by a coarse one sets the common step of every member.");
   s.flag("integrator.retire_below_instruments", &c.retire_below,
          "exponential with local_steps and at least one instrument: a grain that falls below "
          "the lowest instrument (less 1 cm) leaves the simulation and falls freely onto a coarse "

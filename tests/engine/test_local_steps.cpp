@@ -158,15 +158,19 @@ TEST(LocalSteps, KeepTheirPromiseInACrowdedSuspension) {
   scene.integrator.local_steps = true;
   scene.integrator.freeze_settled = true;
   const double hw = scene.cylinder.half_width();
-  Engine engine(engine_setup(scene), sample_of(crowd(-0.3 * hw, 0.3 * hw, 0.0005, 0.012)));
-  std::int64_t engaged = 0;
-  while (engine.time() < 0.5) {
-    engine.step(0.5);
-    const std::string broken = engine.local_violation();
-    ASSERT_EQ(broken, "") << "at t = " << engine.time() << " s, step " << engine.stats().steps;
-    engaged = engine.stats().engaged;
+  for (bool carried : {false, true}) {
+    scene.integrator.carried_fraction = carried ? 0.2 : 0.0;
+    Engine engine(engine_setup(scene), sample_of(crowd(-0.3 * hw, 0.3 * hw, 0.0005, 0.012)));
+    std::int64_t engaged = 0;
+    while (engine.time() < 0.5) {
+      engine.step(0.5);
+      const std::string broken = engine.local_violation();
+      ASSERT_EQ(broken, "") << "carried steps " << carried << " at t = " << engine.time()
+                            << " s, step " << engine.stats().steps;
+      engaged = engine.stats().engaged;
+    }
+    EXPECT_GT(engaged, 100) << engaged;  // the suspension did crowd the common step
   }
-  EXPECT_GT(engaged, 100) << engaged;  // the suspension did crowd the common step
 }
 
 // The same crowd without suspension contacts, across the whole width and retiring below the

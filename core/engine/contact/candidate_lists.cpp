@@ -24,6 +24,7 @@ void CandidateLists::rebuild_at_build_positions(const EngineState& s, NeighbourG
   grid.build(n, x0.data(), y0.data(), search.data());
   build(grid, n, x0.data(), y0.data(), search.data(), frozen_aware ? s.frozen.data() : nullptr);
   stale = false;
+  appended_only = false;
 }
 
 void CandidateLists::build(const NeighbourGrid& grid, std::size_t n, const double* bx,
@@ -68,12 +69,16 @@ void CandidateLists::build(const NeighbourGrid& grid, std::size_t n, const doubl
 // move_i + move_j < margin (r_i + r_j) for every pair, i.e. while the two largest excesses
 // e = move - margin r (1% kept in reserve) sum to less than zero. A small grain carried
 // along by a large one thus uses the margin of its partners too, not its own margin alone.
+// With margins per grain (carried steps) margin r_i is the margin grain i's search radius holds.
 bool CandidateLists::moved_beyond_margin(const EngineState& s) {
   const std::size_t n = s.size();
   const double* x = s.x.data();
   const double* y = s.y.data();
   const double* d = s.diameter.data();
   const double share = 0.99 * 0.5 * margin;
+  const bool own = margin_per_grain;
+  const double* reach = search.data();
+  const double range_r = 0.5 * range;
   const int threads = threads_;
   std::vector<double>& top = top_excess_;
   top.assign(2 * std::size_t(threads), -HUGE_VAL);  // no allocation after the first step
@@ -83,7 +88,8 @@ bool CandidateLists::moved_beyond_margin(const EngineState& s) {
 #pragma omp for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
       const double dx = x[i] - x0[i], dy = y[i] - y0[i];
-      const double excess = std::sqrt(dx * dx + dy * dy) - share * d[i];
+      const double excess = own ? std::sqrt(dx * dx + dy * dy) - 0.99 * (reach[i] - range_r * d[i])
+                                : std::sqrt(dx * dx + dy * dy) - share * d[i];
       if (excess > second) {
         second = std::max(std::min(first, excess), second);
         first = std::max(first, excess);

@@ -37,7 +37,19 @@ class CandidateLists {
   std::vector<double> search;  // search radius: radius + lubrication reach + skins + margin
   std::vector<double> x0, y0;  // positions when the lists were built
   double margin = 2;           // of the search radii, in radii
-  bool stale = true;           // to be rebuilt before the next pass reads them
+  // Carried steps (integrator.carried_fraction): a grain's margin is its search radius beyond the
+  // interaction range (`range` radii), margin times its carrier's radius, not its own.
+  bool margin_per_grain = false;
+  double range = 1;
+  // The margin grain i's search radius holds (the interaction range left out).
+  double margin_of(std::size_t i, double diameter) const {
+    return margin_per_grain ? search[i] - 0.5 * range * diameter : 0.5 * margin * diameter;
+  }
+  bool stale = true;  // to be rebuilt before the next pass reads them
+  // Stale only by particles appended to the state since the build: the lists still hold every
+  // pair among the others (carried steps choose a step from them meanwhile).
+  bool appended_only = false;
+  std::size_t built_count() const { return list_start_.empty() ? 0 : list_start_.size() - 1; }
 
  private:
   void build(const NeighbourGrid& grid, std::size_t n, const double* bx, const double* by,

@@ -80,6 +80,7 @@ void ContactProjection::save(std::ostream& out) const {
 void ContactProjection::load(std::istream& in) {
   load_history(in, warm_);
   if (friction_) load_history(in, warm_tangential_);
+  kept_ = warm_.sorted_entries();
   held_.clear();  // rebuilt from warm_ at the next run
   held_list_.clear();
   particle_.clear();

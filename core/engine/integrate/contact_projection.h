@@ -89,6 +89,10 @@ class ContactProjection {
   void mark_touching(std::vector<double>& touching) const;
   // The particles the last run's constraints involved (engine order): the only ones it moved.
   const std::vector<std::uint32_t>& participants() const { return particle_; }
+  // The pairs (sample indices; a wall as partner kSide or kFloor) that held a force at the end
+  // of the last run, or that a loaded checkpoint says did.
+  const std::vector<PairHistory::Entry>& held_pairs() const { return kept_; }
+  static bool is_wall(std::uint32_t partner) { return partner >= kSide; }
   std::size_t bytes() const;
   void save(std::ostream& out) const;
   void load(std::istream& in);

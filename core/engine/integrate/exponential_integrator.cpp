@@ -28,6 +28,19 @@ class ExponentialIntegrator final : public Integrator {
     // Before any velocity is known, the largest grain at its settling speed sets the step.
     step_ = limited(ctx_.max_radius > 0 ? ctx_.max_terminal_speed / ctx_.max_radius : 0);
     projection_.configure(*ctx_.model, ctx_.threads, ctx_.contact_sweeps, ctx_.grains);
+    carried_ = ctx_.carried_steps && config_.carried_fraction > 0 && ctx_.sample_diameter &&
+               ctx_.lists && crossing_;
+    if (carried_) {
+      const std::vector<double>& d = *ctx_.sample_diameter;
+      carrier_.resize(d.size());
+      largest_.assign(d.size(), 0.0);
+      parent_.resize(d.size());
+      touching_.assign(d.size(), 0);
+      for (std::size_t i = 0; i < d.size(); ++i) {
+        carrier_[i] = 0.5 * d[i];
+        parent_[i] = std::uint32_t(i);
+      }
+    }
   }
   const char* name() const override { return "exponential"; }
   double next_step(const PassFacts&) override { return step_; }
@@ -90,10 +103,16 @@ class ExponentialIntegrator final : public Integrator {
         if (!s.frozen[p]) check(s, p, ctx_.runaway_speed, moved);
       if (moved.found && !blowup.found) blowup = moved;
     }
-    step_ = limited(fastest(s));
+    // Carried steps: the local stepper chooses the next step once the members and the lists
+    // are up to date (refresh_step).
+    if (carried_) find_carriers();
+    if (!carried_) step_ = choose_step(s);
   }
 
-  void refresh_step(const EngineState& s) override { step_ = limited(fastest(s)); }
+  void refresh_step(const EngineState& s) override { step_ = choose_step(s); }
+  const std::vector<double>* carrier_radii() const override {
+    return carried_ ? &carrier_ : nullptr;
+  }
 
   void contact_facts(PassFacts& facts) const override {
     facts.contacts = facts_.touching;
@@ -111,9 +130,14 @@ class ExponentialIntegrator final : public Integrator {
   void load(std::istream& in) override {
     in.read(reinterpret_cast<char*>(&step_), 8);
     projection_.load(in);
+    if (carried_) find_carriers();
   }
   std::size_t bytes() const override {
-    return projection_.bytes() + (drag_.capacity() + start_x_.capacity() + start_y_.capacity()) * 8;
+    return projection_.bytes() +
+           (drag_.capacity() + start_x_.capacity() + start_y_.capacity() + carrier_.capacity()) *
+               8 +
+           (parent_.capacity() + carried_ids_.capacity()) * 4 + touching_.capacity() +
+           largest_.capacity() * 8;
   }
 
  private:
@@ -149,7 +173,128 @@ class ExponentialIntegrator final : public Integrator {
     return sums.max_radii_per_s;
   }
 
-  std::vector<double> drag_;               // per particle: its drag coefficient over this step
+  double choose_step(const EngineState& s) {
+    const CandidateLists& lists = *ctx_.lists;
+    return carried_ && (!lists.stale || lists.appended_only) ? carried_step(s)
+                                                             : limited(fastest(s));
+  }
+
+  // Carried steps: the grains held together by the forces the last step left (the projection's
+  // held pairs), as sets (union-find), each grain given its set's largest radius.
+  void find_carriers() {
+    const std::vector<double>& d = *ctx_.sample_diameter;
+    for (std::uint32_t id : carried_ids_) {
+      carrier_[id] = 0.5 * d[id];
+      parent_[id] = id;
+      touching_[id] = 0;
+    }
+    carried_ids_.clear();
+    auto root = [&](std::uint32_t a) {
+      while (parent_[a] != a) a = parent_[a] = parent_[parent_[a]];
+      return a;
+    };
+    for (const PairHistory::Entry& e : projection_.held_pairs()) {
+      const std::uint32_t a = std::uint32_t(e.key >> 32), b = std::uint32_t(e.key & 0xFFFFFFFFu);
+      if (ContactProjection::is_wall(b) || a >= d.size() || b >= d.size()) continue;
+      carried_ids_.push_back(a);
+      carried_ids_.push_back(b);
+      const std::uint32_t ra = root(a), rb = root(b);
+      if (ra != rb) parent_[ra] = rb;
+    }
+    for (std::uint32_t id : carried_ids_) {
+      const std::uint32_t r = root(id);
+      largest_[r] = std::max(largest_[r], 0.5 * d[id]);
+    }
+    const double scale = config_.carried_fraction / config_.crossing_fraction;
+    for (std::uint32_t id : carried_ids_) {
+      carrier_[id] = std::max(0.5 * d[id], scale * largest_[root(id)]);
+      touching_[id] = 1;
+    }
+    for (std::uint32_t id : carried_ids_) largest_[id] = 0;
+  }
+
+  // Carried steps: the longest step in which no moving grain travels more than
+  // crossing_fraction of its pace radius (its carrier's radius, within its lists' margin and
+  // its box's allowance), and no listed pair closes by more than its gap plus
+  // crossing_fraction (r_i + r_j). Speeds count at least the settling speed, as fastest() does;
+  // a pair's closing speed counts both (each may reach it within the step). Needs fresh lists.
+  double carried_step(const EngineState& s) {
+    const CandidateLists& lists = *ctx_.lists;
+    const std::vector<double>* allowance =
+        ctx_.allowance && !ctx_.allowance->empty() ? ctx_.allowance : nullptr;
+    const double c = config_.crossing_fraction;
+    const std::size_t n = s.size();
+    double rate = 0;  // per second: the inverse of the longest step allowed
+    closing_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double d = s.diameter[k];
+      const double v2 = s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k];
+      const double settling = settling_ * d * d;
+      closing_[k] = s.frozen[k] ? 0.0 : std::sqrt(v2) + settling;
+      if (s.frozen[k]) continue;
+      const double speed = std::sqrt(std::max(v2, settling * settling));
+      // A grain that touches nothing keeps its own radius, which its lists' margin and its box
+      // always allow (and which needs no look-up by sample index, a cache miss each).
+      const std::uint32_t id = s.origin[k];
+      double pace = 0.5 * d;
+      if (touching_[id]) {
+        pace = std::min(carrier_[id], lists.margin_of(k, d) / lists.margin);
+        if (allowance) pace = std::min(pace, (*allowance)[id]);
+      }
+      rate = std::max(rate, speed / (c * pace));
+    }
+    const auto& order = ctx_.grid->order();
+    const std::vector<std::uint32_t>& start = lists.list_start();
+    const std::vector<std::uint32_t>& list = lists.list();
+    // Particles appended since the build (appended_only) have no lists: the stepper bounds
+    // their pairs itself (pair_rate).
+    const std::size_t listed = std::min(n, lists.built_count());
+    // A pair closes at most at the sum of both speeds (floors included): most pairs are then
+    // far enough apart not to bind, which their squared distance tells without a root.
+    for (std::size_t k = 0; k < listed; ++k) {
+      const std::uint32_t i = order[k];
+      if (i >= n) continue;
+      for (std::uint32_t q = start[k]; q < start[k + 1]; ++q) {
+        const std::uint32_t j = list[q];
+        if (j >= n) continue;
+        const double reach = 0.5 * (s.diameter[i] + s.diameter[j]);
+        const double apart = (closing_[i] + closing_[j]) / rate - c * reach + reach;
+        const double dx = s.x[i] - s.x[j], dy = s.y[i] - s.y[j];
+        if (rate > 0 && (apart <= 0 || dx * dx + dy * dy >= apart * apart)) continue;
+        rate = std::max(rate, pair_rate(s, i, j));
+      }
+    }
+    return rate > 0 ? std::min(ceiling_, 1.0 / rate) : ceiling_;
+  }
+
+ public:
+  double pair_rate(const EngineState& s, std::size_t i, std::size_t j) const override {
+    if (!carried_ || (s.frozen[i] && s.frozen[j])) return 0;
+    const double ri = 0.5 * s.diameter[i], rj = 0.5 * s.diameter[j];
+    const double floor_i = s.frozen[i] ? 0.0 : settling_ * 4 * ri * ri;
+    const double floor_j = s.frozen[j] ? 0.0 : settling_ * 4 * rj * rj;
+    const double dvx = s.vx[i] - s.vx[j], dvy = s.vy[i] - s.vy[j];
+    const double dx = s.x[i] - s.x[j], dy = s.y[i] - s.y[j];
+    const double closing = std::sqrt(dvx * dvx + dvy * dvy) + floor_i + floor_j;
+    const double gap = std::max(0.0, std::sqrt(dx * dx + dy * dy) - ri - rj);
+    return closing / (gap + config_.crossing_fraction * (ri + rj));
+  }
+  double grain_rate(const EngineState& s, std::size_t k) const override {
+    if (!carried_ || s.frozen[k]) return 0;
+    const double d = s.diameter[k];
+    const double v2 = s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k];
+    const double settling = settling_ * d * d;
+    return std::sqrt(std::max(v2, settling * settling)) / (config_.crossing_fraction * 0.5 * d);
+  }
+
+ private:
+  bool carried_ = false;
+  std::vector<double> carrier_;  // by sample index: see carrier_radii()
+  std::vector<double> largest_;  // find_carriers' scratch: each set's largest radius, at its root
+  std::vector<std::uint32_t> parent_, carried_ids_;  // union-find by sample index; its members
+  std::vector<double> closing_;         // carried_step's scratch: each particle's speed and floor
+  std::vector<std::uint8_t> touching_;  // by sample index: in carried_ids_
+  std::vector<double> drag_;            // per particle: its drag coefficient over this step
   std::vector<std::uint8_t> constrained_;  // per particle, zero between steps
   ProjectionFacts facts_;
   double step_ = 0, ceiling_ = 0;

@@ -31,7 +31,11 @@
 //   less than 0.8 (r_i + r_j) in a step, and no centre passes another. Since that speed grows as
 //   d^2, the largest grain still moving sets the step, which therefore grows as the coarse grains
 //   settle out. It is also at most fast_step_factor * min t_tr and max_step. docs/engine.md has the
-//   details.
+//   details. With carried steps (local steps only) a grain held against a coarser one, which
+//   moves with it, may travel crossing_fraction of the coarser one's radius a step (bounded by
+//   its lists' margin and its box), and every listed pair at most closes by its gap plus
+//   crossing_fraction (r_i + r_j): the same bound on how deep two grains can meet, without a
+//   pushed fine grain setting every member's step.
 
 #include <algorithm>
 #include <cstdint>
@@ -68,6 +72,12 @@ struct IntegratorContext {
   // part, so the step counts every moving grain at least at its settling speed (a grain a
   // contact slowed may fall free within the step), not only the unsupported ones.
   bool members_only = false;
+  // Carried steps (integrator.carried_fraction > 0, local steps only): the sample's diameters
+  // and, by sample index, the radius in which each member's box lets it move (its allowance;
+  // empty: no bound), both owned by the engine.
+  bool carried_steps = false;
+  const std::vector<double>* sample_diameter = nullptr;
+  const std::vector<double>* allowance = nullptr;
 };
 
 class Integrator {
@@ -90,6 +100,16 @@ class Integrator {
   // The particles the state holds changed (local time stepping, where the step counts every
   // moving particle at least at its settling speed): the next step is chosen again.
   virtual void refresh_step(const EngineState&) {}
+  // Carried steps: by sample index, each grain's pace radius: the largest radius among the
+  // grains it touches, directly or through others, at the end of the last step, times
+  // carried_fraction / crossing_fraction, or its own radius if that is more (or it touches
+  // none); a step lets it travel crossing_fraction of that. nullptr without carried steps.
+  virtual const std::vector<double>* carrier_radii() const { return nullptr; }
+  // Carried steps: the inverse of the longest step in which particles i and j (state indices)
+  // close by at most their gap plus crossing_fraction (r_i + r_j); 0 without carried steps.
+  virtual double pair_rate(const EngineState&, std::size_t, std::size_t) const { return 0; }
+  // Carried steps: the same for particle k alone, at its own radius (one that touches nothing).
+  virtual double grain_rate(const EngineState&, std::size_t) const { return 0; }
 };
 
 std::unique_ptr<Integrator> make_integrator(const IntegratorConfig& config,

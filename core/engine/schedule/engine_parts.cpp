@@ -1,5 +1,7 @@
 #include "core/engine/schedule/engine_parts.h"
 
+#include <cmath>
+
 #include <omp.h>
 
 #include <algorithm>
@@ -104,6 +106,10 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
                     setup.forces.min_voidage, threads);
   pass.configure(model, threads);
   lists.configure(threads);
+  carried = local && setup.integrator.carried_fraction > 0 && model.contact;
+  lists.margin_per_grain = carried;
+  lists.range = 1 + reach + model.skin;
+  if (carried) allowance.assign(n, HUGE_VAL);
 
   const Fluid& fluid = setup.fluid;
   IntegratorContext ctx;
@@ -123,6 +129,9 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
   ctx.lists = &lists;
   ctx.grains = n;
   ctx.members_only = local;
+  ctx.carried_steps = carried;
+  ctx.sample_diameter = &sample.particles.diameter;
+  ctx.allowance = &allowance;
   drag = ctx.drag;
   integrator = make_integrator(setup.integrator, ctx);
   freeze.height =
@@ -132,6 +141,12 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
 }
 
 void EngineParts::rebuild_lists() {
+  // Carried steps: a member's margin covers what its carrier lets it travel between two
+  // builds; it only grows while it is a member (a step chosen before the build stays safe).
+  if (const std::vector<double>* carrier = carried ? integrator->carrier_radii() : nullptr)
+    for (std::size_t k = 0; k < state.size(); ++k)
+      lists.search[k] = std::max(lists.search[k], 0.5 * state.diameter[k] * lists.range +
+                                                      lists.margin * (*carrier)[state.origin[k]]);
   lists.rebuild(state, grid, local);
   ++stats.list_builds;
 }

@@ -61,6 +61,11 @@ struct EngineParts {
   bool pass_needed = true;  // see needs_force_pass
   // Whether free grains coast on windows of their own (the local stepper).
   bool local = false;
+  // integrator.carried_fraction in effect (local steps with contacts): the lists' margins follow
+  // each member's carrier, and `allowance` holds, by sample index, the radius in which each
+  // member's box lets it move (the local stepper's; the integrator's step respects it).
+  bool carried = false;
+  std::vector<double> allowance;
   double time = 0;
   EngineStats stats;
 };

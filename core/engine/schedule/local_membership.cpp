@@ -71,11 +71,25 @@ void LocalStepper::anchor(std::size_t k) {
   if (e_.model.contact)
     boxes_.set(id, member_box(k),
                box_tag(e_.state.frozen[k] ? GrainKind::frozen : GrainKind::moving));
+  if (e_.carried) note_allowance(id, k);
+}
+
+// Carried steps: the radius in which member k's box lets it move, read off the box itself (so
+// that a checkpoint's boxes give the same bound to the last bit).
+void LocalStepper::note_allowance(std::uint32_t id, std::size_t k) {
+  const double r = 0.5 * e_.state.diameter[k];
+  const Box& b = boxes_.box(id);
+  e_.allowance[id] =
+      e_.state.frozen[k] ? r : std::max(0.0, 0.5 * (b.x1 - b.x0) - r * (1 + kSkin)) / kAllowance;
 }
 
 Box LocalStepper::member_box(std::size_t k) const {
   const double r = 0.5 * e_.state.diameter[k];
-  const double reach = r * (1 + kSkin) + (e_.state.frozen[k] ? 0.0 : kAllowance * r);
+  // With carried steps a grain held against a coarser one moves at its pace: its box allows
+  // as many of the coarser one's radii.
+  const std::vector<double>* carrier = e_.carried ? e_.integrator->carrier_radii() : nullptr;
+  const double pace = carrier ? std::max(r, (*carrier)[e_.state.origin[k]]) : r;
+  const double reach = r * (1 + kSkin) + (e_.state.frozen[k] ? 0.0 : kAllowance * pace);
   return Box{e_.state.x[k] - reach, e_.state.x[k] + reach, e_.state.y[k] - reach,
              e_.state.y[k] + reach};
 }

@@ -149,12 +149,15 @@ void LocalStepper::step(double limit) {
     for (std::uint32_t id : failed_)
       if (kind_[id] == GrainKind::coasting) engage(id, coasting_at(id, e_.time), false);
     wake_around(kNoMember);
+    if (!e_.lists.stale) e_.lists.appended_only = true;  // the joiners come last
     e_.lists.stale = true;
     index_members();
-    e_.integrator->refresh_step(e_.state);
+    // Carried steps: the members before them have not moved, their bound stands.
+    if (!e_.carried || !e_.lists.appended_only) e_.integrator->refresh_step(e_.state);
     members_changed_ = false;
     moving = count_moving();
-    dt = moving ? e_.integrator->next_step(e_.facts) : e_.setup.integrator.max_step;
+    dt = moving ? std::min(e_.integrator->next_step(e_.facts), joiners_step())
+                : e_.setup.integrator.max_step;
     target = e_.time + dt >= limit ? limit : e_.time + dt;
     // Syncs still due before the new target are taken in the next round: no window may end
     // unlooked-at while the members step past it.
@@ -214,7 +217,8 @@ void LocalStepper::step(double limit) {
       const std::uint32_t id = e_.state.origin[k];
       const double moved =
           std::hypot(e_.state.x[k] - track_[id].flight.x, e_.state.y[k] - track_[id].flight.y);
-      if (moved > kReanchor * 0.5 * e_.state.diameter[k]) wake_.push_back(id);
+      const double pace = e_.carried ? e_.allowance[id] : 0.5 * e_.state.diameter[k];
+      if (moved > kReanchor * pace) wake_.push_back(id);
     }
     wake_around(kNoMember);
     if (e_.freeze.due(e_.stats.steps)) {
@@ -228,11 +232,38 @@ void LocalStepper::step(double limit) {
   if (members_changed_) {
     e_.lists.stale = true;
     index_members();
-    e_.integrator->refresh_step(e_.state);
+    fresh_step();
     members_changed_ = false;
+  } else if (e_.carried) {
+    fresh_step();  // the lists and the boxes (re-anchored, another pace) as they are now
   }
   e_.stats.members = e_.state.size();
   count_lanes();
+}
+
+// Carried steps, while the lists lack the grains that joined in this step's rounds: each at its
+// own radius, and its pairs with every member whose box meets its own (no other can reach it
+// within the step).
+double LocalStepper::joiners_step() const {
+  if (!e_.carried || !e_.lists.appended_only) return HUGE_VAL;
+  double rate = 0;
+  for (std::size_t k = e_.lists.built_count(); k < e_.state.size(); ++k) {
+    const std::uint32_t id = e_.state.origin[k];
+    rate = std::max(rate, e_.integrator->grain_rate(e_.state, k));
+    boxes_.overlapping(boxes_.box(id), id, [&](std::uint32_t j) {
+      if (is_member(kind_[j]))
+        rate = std::max(rate, e_.integrator->pair_rate(e_.state, k, member_[j]));
+    });
+  }
+  return rate > 0 ? 1.0 / rate : HUGE_VAL;
+}
+
+void LocalStepper::fresh_step() {
+  if (e_.carried && e_.lists.stale && !e_.lists.appended_only && e_.state.size() > 0) {
+    e_.resort_and_rebuild_lists();
+    index_members();
+  }
+  e_.integrator->refresh_step(e_.state);
 }
 
 void LocalStepper::move_deposit(std::uint32_t id, double x, double y) {

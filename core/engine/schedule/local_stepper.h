@@ -149,6 +149,11 @@ class LocalStepper {
   void settle_members();
   void index_members();
   Box member_box(std::size_t k) const;
+  void note_allowance(std::uint32_t id, std::size_t k);
+  // Carried steps: lists rebuilt if stale, then the members' step chosen again (the step reads
+  // the lists' pairs and margins).
+  void fresh_step();
+  double joiners_step() const;
   // The coarse bed (local_retirement.cpp).
   void retire(std::uint32_t id, double t, const FreeFlight::Point& p);
   void retire_members();
