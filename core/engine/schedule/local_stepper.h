@@ -13,7 +13,8 @@
 // before it is looked at again — a coasting grain the box its trajectory sweeps over its
 // window, a member of the common step its position with an allowance of kAllowance radii
 // (re-anchored once it has used kReanchor of them; it moves at most crossing_fraction < 1 radius
-// a step), a settled grain its disc — each widened by (1 + kSkin) radii. A window is chosen so
+// a step; with carried steps, pace radii: a grain held against a coarser one moves at its pace),
+// a settled grain its disc — each widened by (1 + kSkin) radii. A window is chosen so
 // that its box overlaps no other box and no wall; the longest such window up to
 // integrator.max_coast_s, halved until it fits. A grain that cannot coast even over its own
 // crossing time joins the common step (it is *engaged*), and whatever its box then overlaps
