@@ -258,8 +258,10 @@ double LocalStepper::joiners_step() const {
   return rate > 0 ? 1.0 / rate : HUGE_VAL;
 }
 
+// At a step's end: the lists are then always fresh, so a checkpoint (which keeps whether they
+// are stale, not why) resumes to the same step.
 void LocalStepper::fresh_step() {
-  if (e_.carried && e_.lists.stale && !e_.lists.appended_only && e_.state.size() > 0) {
+  if (e_.carried && e_.lists.stale && e_.state.size() > 0) {
     e_.resort_and_rebuild_lists();
     index_members();
   }
