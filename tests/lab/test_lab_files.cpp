@@ -21,18 +21,24 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kOut = fs::path(SEDEM_TEST_OUTPUT) / "lab_files";
+// Each test's own folder: ctest runs them in parallel, and a workbook one test was rewriting
+// while another unpacked it failed as "cannot unpack xl/worksheets/sheet2.xml".
+fs::path out_dir() {
+  const fs::path dir = fs::path(SEDEM_TEST_OUTPUT) / "lab_files" /
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  fs::create_directories(dir);
+  return dir;
+}
 
 fs::path write(const std::string& name, const std::string& text) {
-  fs::create_directories(kOut);
-  std::ofstream(kOut / name, std::ios::binary) << text;
-  return kOut / name;
+  const fs::path file = out_dir() / name;
+  std::ofstream(file, std::ios::binary) << text;
+  return file;
 }
 
 // A workbook made by make_workbook.py: "lab.xlsx" (openpyxl) or "shared.xlsx" (by hand).
 fs::path workbook(const std::string& name) {
-  fs::create_directories(kOut);
-  const fs::path file = kOut / name;
+  const fs::path file = out_dir() / name;
   const std::string command = std::string(SEDEM_PYTHON) + " " + SEDEM_SOURCE_DIR +
                               "/tests/lab/make_workbook.py " + file.string();
   EXPECT_EQ(std::system(command.c_str()), 0) << command << " (python3-openpyxl installed?)";
@@ -193,7 +199,7 @@ TEST(LabFiles, WrongColumnNamesNameTheFileWhatWasFoundAndExpected) {
 // finer of the fraction times 0.85: 62.201887, 25.216981 and 8.405660 %.
 TEST(LabFiles, SieveAndHydrometerToTheWholeCurveWithItsReport) {
   const fs::path book = workbook("lab.xlsx");
-  const fs::path out = kOut / "whole.csv", report = kOut / "whole_report.html";
+  const fs::path out = out_dir() / "whole.csv", report = out_dir() / "whole_report.html";
   fs::remove(out);
   const auto r = test::run_sedem(
       "reduce " + book.string() + " --sheet Readings --gs 2.70 --sieve " + book.string() +
@@ -230,8 +236,8 @@ TEST(LabFiles, SieveAndHydrometerToTheWholeCurveWithItsReport) {
         // The made-up sieves and readings do not fit (test_lab_formats.cpp): a warning.
         std::string("a curve cannot rise toward finer sizes")})
     EXPECT_NE(page.find(part), std::string::npos) << part;
-  EXPECT_TRUE(fs::exists(kOut / "whole_report_curve.png"));
-  EXPECT_TRUE(fs::exists(kOut / "whole_report_curve.csv"));
+  EXPECT_TRUE(fs::exists(out_dir() / "whole_report_curve.png"));
+  EXPECT_TRUE(fs::exists(out_dir() / "whole_report_curve.csv"));
   // A separating sieve the analysis lacks: exit 2, the sieve file named.
   const auto no =
       test::run_sedem("reduce " + book.string() + " --sheet Readings --gs 2.70 --sieve " +
@@ -250,7 +256,7 @@ TEST(LabFiles, SieveAndHydrometerToTheWholeCurveWithItsReport) {
 // reduction and the inverted curve, each marked, and the report shows them.
 TEST(LabFiles, InvertTakesAWorkbookAndTheSieves) {
   const fs::path book = workbook("lab.xlsx");
-  const fs::path dir = kOut / "invert";
+  const fs::path dir = out_dir() / "invert";
   const auto r = test::run_sedem(
       "invert " + book.string() + " --sheet Readings --test hydrometer --gs 2.70 --sieve " +
       book.string() + " --sieve-sheet Sieves --replicas 0 -q --out " + dir.string());
