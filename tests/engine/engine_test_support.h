@@ -51,6 +51,13 @@ std::vector<Grain> scattered(int count, double x0, double x1, double y0, double 
   return g;
 }
 
+// 1500 grains of 70, 30 and 5 um scattered in a box of the section.
+inline std::vector<Grain> crowd(double x0, double x1, double y0, double y1) {
+  return scattered(
+      1500, x0, x1, y0, y1, [](int k) { return k % 4 == 0 ? 70e-6 : (k % 4 == 1 ? 30e-6 : 5e-6); },
+      7, 0.0);
+}
+
 // A scene with the given drag and integrator, nothing frozen or retired, one thread unless told.
 inline Scene scene_with(const std::string& drag, const std::string& method, int threads = 1) {
   Scene scene;

@@ -63,9 +63,7 @@ TEST(CarriedSteps, ACoarseGrainStillPushesAFineOneAheadInFewerSteps) {
 // 0.2 (and 8 % at 0.4; docs/engine.md), held here within 5 %, in under half the steps.
 TEST(CarriedSteps, ACrowdFallsAsWithoutThem) {
   const double hw = Scene{}.cylinder.half_width();
-  const auto grains = test::scattered(
-      1500, -0.3 * hw, 0.3 * hw, 0.0005, 0.012,
-      [](int k) { return k % 4 == 0 ? 70e-6 : (k % 4 == 1 ? 30e-6 : 5e-6); }, 7, 0.0);
+  const auto grains = test::crowd(-0.3 * hw, 0.3 * hw, 0.0005, 0.012);
   double fall[2][3] = {};
   std::int64_t steps[2] = {0, 0};
   for (bool carried : {false, true}) {

@@ -142,13 +142,6 @@ TEST(LocalSteps, WithoutSuspensionContactsACoarseGrainPassesAFineOne) {
   EXPECT_EQ(both.stats().engaged, 0);
 }
 
-// 1500 grains of 70, 30 and 5 um scattered in a box of the section.
-std::vector<test::Grain> crowd(double x0, double x1, double y0, double y1) {
-  return test::scattered(
-      1500, x0, x1, y0, y1, [](int k) { return k % 4 == 0 ? 70e-6 : (k % 4 == 1 ? 30e-6 : 5e-6); },
-      7, 0.0);
-}
-
 // A crowded suspension of coarse and fine grains (many joining and leaving the common step):
 // after every step each grain is inside its box, no window has ended unlooked-at and no two
 // boxes overlap that must not. (A step that a joining grain shortened once let later windows
@@ -160,7 +153,7 @@ TEST(LocalSteps, KeepTheirPromiseInACrowdedSuspension) {
   const double hw = scene.cylinder.half_width();
   for (bool carried : {false, true}) {
     scene.integrator.carried_fraction = carried ? 0.2 : 0.0;
-    Engine engine(engine_setup(scene), sample_of(crowd(-0.3 * hw, 0.3 * hw, 0.0005, 0.012)));
+    Engine engine(engine_setup(scene), sample_of(test::crowd(-0.3 * hw, 0.3 * hw, 0.0005, 0.012)));
     std::int64_t engaged = 0;
     while (engine.time() < 0.5) {
       engine.step(0.5);
@@ -181,7 +174,7 @@ TEST(LocalSteps, KeepTheirPromiseWithoutSuspensionContacts) {
   scene.integrator.local_steps = true;
   scene.integrator.retire_below = true;
   const double hw = scene.cylinder.half_width();
-  const auto grains = crowd(-hw + 40e-6, hw - 40e-6, 0.25, 0.262);
+  const auto grains = test::crowd(-hw + 40e-6, hw - 40e-6, 0.25, 0.262);
   std::int64_t engaged[2] = {0, 0};
   for (bool contacts : {true, false}) {
     scene.forces.suspension_contacts = contacts;
@@ -210,7 +203,7 @@ Scene passing_scene() {
 TEST(LocalSteps, WithoutSuspensionContactsResumesBitForBit) {
   Scene scene = passing_scene();
   const double hw = scene.cylinder.half_width();
-  const auto grains = crowd(-hw + 40e-6, hw - 40e-6, 0.2, 0.3);
+  const auto grains = test::crowd(-hw + 40e-6, hw - 40e-6, 0.2, 0.3);
   const std::string checkpoint =
       (std::filesystem::temp_directory_path() / "sedem_passing_test.ckpt").string();
   Engine first(engine_setup(scene), sample_of(grains));

@@ -77,8 +77,6 @@ bool CandidateLists::moved_beyond_margin(const EngineState& s) {
   const double* d = s.diameter.data();
   const double share = 0.99 * 0.5 * margin;
   const bool own = margin_per_grain;
-  const double* reach = search.data();
-  const double range_r = 0.5 * range;
   const int threads = threads_;
   std::vector<double>& top = top_excess_;
   top.assign(2 * std::size_t(threads), -HUGE_VAL);  // no allocation after the first step
@@ -88,8 +86,8 @@ bool CandidateLists::moved_beyond_margin(const EngineState& s) {
 #pragma omp for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
       const double dx = x[i] - x0[i], dy = y[i] - y0[i];
-      const double excess = own ? std::sqrt(dx * dx + dy * dy) - 0.99 * (reach[i] - range_r * d[i])
-                                : std::sqrt(dx * dx + dy * dy) - share * d[i];
+      const double excess =
+          std::sqrt(dx * dx + dy * dy) - (own ? 0.99 * margin_of(i, d[i]) : share * d[i]);
       if (excess > second) {
         second = std::max(std::min(first, excess), second);
         first = std::max(first, excess);

@@ -105,8 +105,10 @@ class ExponentialIntegrator final : public Integrator {
     }
     // Carried steps: the local stepper chooses the next step once the members and the lists
     // are up to date (refresh_step).
-    if (carried_) find_carriers();
-    if (!carried_) step_ = choose_step(s);
+    if (carried_)
+      find_carriers();
+    else
+      step_ = choose_step(s);
   }
 
   void refresh_step(const EngineState& s) override { step_ = choose_step(s); }
@@ -227,21 +229,18 @@ class ExponentialIntegrator final : public Integrator {
     double rate = 0;  // per second: the inverse of the longest step allowed
     closing_.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
-      const double d = s.diameter[k];
-      const double v2 = s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k];
-      const double settling = settling_ * d * d;
-      closing_[k] = s.frozen[k] ? 0.0 : std::sqrt(v2) + settling;
+      closing_[k] =
+          s.frozen[k] ? 0.0 : std::sqrt(s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k]) + floor_of(s, k);
       if (s.frozen[k]) continue;
-      const double speed = std::sqrt(std::max(v2, settling * settling));
       // A grain that touches nothing keeps its own radius, which its lists' margin and its box
       // always allow (and which needs no look-up by sample index, a cache miss each).
       const std::uint32_t id = s.origin[k];
-      double pace = 0.5 * d;
+      double pace = 0.5 * s.diameter[k];
       if (touching_[id]) {
-        pace = std::min(carrier_[id], lists.margin_of(k, d) / lists.margin);
+        pace = std::min(carrier_[id], lists.margin_of(k, s.diameter[k]) / lists.margin);
         if (allowance) pace = std::min(pace, (*allowance)[id]);
       }
-      rate = std::max(rate, speed / (c * pace));
+      rate = std::max(rate, floored_speed(s, k) / (c * pace));
     }
     const auto& order = ctx_.grid->order();
     const std::vector<std::uint32_t>& start = lists.list_start();
@@ -271,23 +270,28 @@ class ExponentialIntegrator final : public Integrator {
   double pair_rate(const EngineState& s, std::size_t i, std::size_t j) const override {
     if (!carried_ || (s.frozen[i] && s.frozen[j])) return 0;
     const double ri = 0.5 * s.diameter[i], rj = 0.5 * s.diameter[j];
-    const double floor_i = s.frozen[i] ? 0.0 : settling_ * 4 * ri * ri;
-    const double floor_j = s.frozen[j] ? 0.0 : settling_ * 4 * rj * rj;
     const double dvx = s.vx[i] - s.vx[j], dvy = s.vy[i] - s.vy[j];
     const double dx = s.x[i] - s.x[j], dy = s.y[i] - s.y[j];
-    const double closing = std::sqrt(dvx * dvx + dvy * dvy) + floor_i + floor_j;
+    const double closing = std::sqrt(dvx * dvx + dvy * dvy) + floor_of(s, i) + floor_of(s, j);
     const double gap = std::max(0.0, std::sqrt(dx * dx + dy * dy) - ri - rj);
     return closing / (gap + config_.crossing_fraction * (ri + rj));
   }
   double grain_rate(const EngineState& s, std::size_t k) const override {
     if (!carried_ || s.frozen[k]) return 0;
-    const double d = s.diameter[k];
-    const double v2 = s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k];
-    const double settling = settling_ * d * d;
-    return std::sqrt(std::max(v2, settling * settling)) / (config_.crossing_fraction * 0.5 * d);
+    return floored_speed(s, k) / (config_.crossing_fraction * 0.5 * s.diameter[k]);
   }
 
  private:
+  // A moving grain's clear-water settling speed, which a free grain may reach within a step (0
+  // for a frozen one), and its speed counted at least at that.
+  double floor_of(const EngineState& s, std::size_t k) const {
+    return s.frozen[k] ? 0.0 : settling_ * s.diameter[k] * s.diameter[k];
+  }
+  double floored_speed(const EngineState& s, std::size_t k) const {
+    const double v2 = s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k], floor = floor_of(s, k);
+    return std::sqrt(std::max(v2, floor * floor));
+  }
+
   bool carried_ = false;
   std::vector<double> carrier_;  // by sample index: see carrier_radii()
   std::vector<double> largest_;  // find_carriers' scratch: each set's largest radius, at its root
