@@ -284,10 +284,7 @@ int run_invert(const InvertOptions& o) {
           << ','
           << (curve.bound_upper.empty() ? "" : number(curve.bound_upper_at(curve.diameter[k])))
           << ',' << number(curve.diameter[k] * 1e6) << ','
-          << (curve.bound_lower.empty()          ? ""
-              : curve.open_at(curve.diameter[k]) ? "0"
-                                                 : "1")
-          << '\n';
+          << (curve.open_at(curve.diameter[k]) ? "0" : "1") << '\n';
   });
   const std::string unit = test == Test::hydrometer ? "g_per_l" : "g";
   write_atomically(dir / "readings_fit.csv", [&](std::ostream& csv) {
@@ -340,10 +337,10 @@ int run_invert(const InvertOptions& o) {
       j["readings_allow"] = {{"widest_pp", open.width},
                              {"at_diameter_m", open.diameter},
                              {"tolerance", curve.bound_tolerance}};
-    if (!curve.bound_lower.empty()) {
+    {
       nlohmann::json ranges = nlohmann::json::array();
       for (const auto& [from, to] : curve.open_ranges()) ranges.push_back({from, to});
-      j["readings_cannot_tell"] = {{"bounds_wider_than_pp", curve.open_width},
+      j["readings_cannot_tell"] = {{"rise_between_readings_over_pp", curve.open_rise},
                                    {"diameter_ranges_m", ranges}};
     }
     if (!truth.empty())
@@ -423,14 +420,20 @@ int run_invert(const InvertOptions& o) {
           "they resolve): there the curve is the smoothing's choice\n",
           curve.bound_lower_at(open.diameter), curve.bound_upper_at(open.diameter),
           open.diameter * 1e6);
-    for (const auto& [from, to] : curve.open_ranges())
+    for (const auto& [from, to] : curve.open_ranges()) {
       std::printf(
-          "the readings cannot tell the curve from %.3g to %.3g um: they allow curves more than "
-          "%.0f pp apart there (%.1f to %.1f %% at %.3g um, %.1f to %.1f %% at %.3g um); the "
-          "band there is what they allow\n",
-          from * 1e6, to * 1e6, curve.open_width, curve.bound_lower_at(from),
-          curve.bound_upper_at(from), from * 1e6, curve.bound_lower_at(to),
-          curve.bound_upper_at(to), to * 1e6);
+          "the readings cannot tell the curve from %.3g to %.3g um: it rises by more than "
+          "%.0f pp between two readings there, and they do not say where",
+          from * 1e6, to * 1e6, curve.open_rise);
+      if (curve.bound_lower.empty())
+        std::printf("\n");
+      else
+        std::printf(
+            " (they allow %.1f to %.1f %% at %.3g um, %.1f to %.1f %% at %.3g um); the band "
+            "there is what they allow\n",
+            curve.bound_lower_at(from), curve.bound_upper_at(from), from * 1e6,
+            curve.bound_lower_at(to), curve.bound_upper_at(to), to * 1e6);
+    }
     if (!truth.empty())
       std::printf(
           "against the run's true curve: inverted %.2f pp, %s %.2f pp (largest, at the "

@@ -211,8 +211,9 @@ int main(int argc, char** argv) {
         bound_inside += truth >= lo - 1e-9 && truth <= hi + 1e-9;
         std_err = std::max(std_err, std::abs(p.percent_finer - truth));
         if (std::getenv("SEDEM_INVERT_DEBUG"))
-          std::printf("  d %.2f truth %.2f std %.2f inv %.2f bounds %.2f..%.2f\n", p.diameter * 1e6,
-                      truth, p.percent_finer, curve.at(p.diameter), lo, hi);
+          std::printf("  d %.2f truth %.2f std %.2f inv %.2f bounds %.2f..%.2f%s\n",
+                      p.diameter * 1e6, truth, p.percent_finer, curve.at(p.diameter), lo, hi,
+                      curve.open_at(p.diameter) ? " open" : "");
         inv_err = std::max(inv_err, std::abs(curve.at(p.diameter) - truth));
         // Where the readings cannot tell, the inversion claims no value, only the bounds.
         if (curve.open_at(p.diameter))

@@ -231,7 +231,32 @@ InvertedCurve::OpenInterval InvertedCurve::widest_open() const {
 }
 
 bool InvertedCurve::open_at(double d) const {
-  return !bound_lower.empty() && bound_upper_at(d) - bound_lower_at(d) > open_width;
+  if (reading_diameter.empty() || open_rise <= 0) return false;
+  if (!bound_lower.empty() && bound_upper_at(d) - bound_lower_at(d) <= open_width) return false;
+  // The readings pin the curve at their diameters (averages over their windows); between two
+  // pins they do not say where its rise sits. Intervals between sorted pins, with the curve's
+  // ends (0 % below the finest pin, 100 % above the coarsest) as the outer ones.
+  std::vector<double> pins = reading_diameter;
+  std::sort(pins.begin(), pins.end());
+  const auto rise_of_interval = [&](std::size_t i) {  // interval i: between pins i-1 and i
+    const double below = i == 0 ? 0.0 : at(pins[i - 1]);
+    const double above = i == pins.size() ? 100.0 : at(pins[i]);
+    return above - below;
+  };
+  const auto interval_of = [&](double x) {
+    return std::size_t(std::upper_bound(pins.begin(), pins.end(), x) - pins.begin());
+  };
+  if (rise_of_interval(interval_of(d)) > open_rise) return true;
+  for (std::size_t r = 0; r < reading_window.size() && r < reading_diameter.size(); ++r) {
+    const auto [lo, hi] = reading_window[r];
+    if (d < lo || d > hi) continue;
+    // The reading averages over sizes on both sides of its pin: a rise on either side it cannot
+    // place reaches the whole window.
+    const std::size_t i =
+        std::size_t(std::lower_bound(pins.begin(), pins.end(), reading_diameter[r]) - pins.begin());
+    if (rise_of_interval(i) > open_rise || rise_of_interval(i + 1) > open_rise) return true;
+  }
+  return false;
 }
 
 std::vector<double> InvertedCurve::between_readings() const {
@@ -530,8 +555,9 @@ InvertedCurve invert_readings(const TestSetup& setup, Test test,
   // Where the readings cannot tell the curve, the smoothness prior alone narrows the band, and
   // at a knee it is wrong: the band is then what the readings allow. Both edges stay monotone
   // (each is the pointwise min or max of two monotone sequences).
+  out.open_rise = options.open_rise;
   out.open_width = options.open_width;
-  for (std::size_t k = 0; k < out.lower.size(); ++k) {  // no band, or no bounds: nothing
+  for (std::size_t k = 0; k < out.lower.size() && !out.bound_lower.empty(); ++k) {
     const double d = out.diameter[k];
     if (!out.open_at(d)) continue;
     out.lower[k] = std::min(out.lower[k], out.bound_lower_at(d));

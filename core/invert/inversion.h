@@ -42,9 +42,14 @@ struct InversionOptions {
   // The band also spans how far the curve moves on a grid twice as fine (2 refine + 1 nodes
   // between two readings' diameters): the grid's own coarseness, which no replica shows.
   bool grid_bias = true;
-  // Where the readings' strict bounds are wider than this (pp), the readings cannot tell the
-  // curve there (InvertedCurve::open): the band is then the bounds, and the output says so.
-  double open_width = 40;
+  // Where the curve rises by more than this (pp) between two neighbouring readings' pinned
+  // diameters, the readings cannot tell where in between the rise sits (a knee between two
+  // readings): no value is claimed there or in the two readings' windows (InvertedCurve::
+  // open_at), the band there is the strict bounds, and the output says so.
+  double open_rise = 50;
+  // ... unless the strict bounds there are no wider than this (pp): then the readings do hold
+  // the curve, wherever the rise sits.
+  double open_width = 10;
 };
 
 // The default reading resolutions: 152H 1 g/L (its graduation), the sphere's balance 1 mg,
@@ -85,10 +90,11 @@ struct InvertedCurve {
   std::vector<double> reading_diameter;  // where each reading pins the curve, m (model_diameter)
   // The sizes each reading averages over (ForwardModel::reading_window), m.
   std::vector<std::pair<double, double>> reading_window;
-  // Where the strict bounds are wider than this (InversionOptions::open_width, pp) the
-  // readings cannot tell the curve (open_at): any curve they allow may lie tens of pp from this
-  // one (a knee between two readings), and the band there is the bounds.
-  double open_width = 0;
+  // Where the curve rises by more than this (InversionOptions::open_rise, pp) between two
+  // neighbouring readings' diameters, the readings cannot tell where the rise sits (open_at),
+  // and the band there is the bounds.
+  double open_rise = 0;
+  double open_width = 0;  // InversionOptions::open_width
 
   // Linear in log d between nodes; 0 below a decade under the first node, 100 above 4x the
   // last (the finest and coarsest bins' spans).
@@ -107,8 +113,11 @@ struct InvertedCurve {
     double diameter = 0;  // m
   };
   OpenInterval widest_open() const;
-  // Whether the readings cannot tell the curve at `diameter` (bounds wider than open_width;
-  // false without bounds).
+  // Whether the readings cannot tell the curve at `diameter`: the curve rises by more than
+  // open_rise between the two readings' diameters around it (0 % below the finest, 100 %
+  // above the coarsest), or `diameter` lies in a reading's window (the sizes it averages over)
+  // and the curve rises by more than that on either side of the reading's own diameter; and
+  // the strict bounds there (if computed) are wider than open_width.
   bool open_at(double diameter) const;
   // Midway (in log d) between each two neighbouring readings' diameters more than 5 % apart:
   // where a knee hides from every reading (to score the band there).

@@ -180,8 +180,12 @@ TEST(InvertCommand, ClayLoamRecordWritesCurveBandAndFigure) {
     EXPECT_NEAR(v[6], v[0] * 1e6, 1e-9 * v[6]) << line;
     EXPECT_LE(v[4], v[1] + 1e-6) << line;
     EXPECT_GE(v[5], v[1] - 1e-6) << line;
-    // Where the readings cannot tell (bounds wider than 40 pp), the band is what they allow.
-    EXPECT_EQ(v[7], v[5] - v[4] > 40 ? 0 : 1) << line;
+    // Where the bounds hold the curve within 10 pp the readings tell it; where they cannot
+    // tell it (a knee between readings, tests/invert/test_open_rule.cpp), the band is what
+    // they allow.
+    if (v[5] - v[4] <= 10) {
+      EXPECT_EQ(v[7], 1) << line;
+    }
     if (v[7] == 0) {
       EXPECT_TRUE(v[2] <= v[4] + 1e-6 && v[3] >= v[5] - 1e-6) << line;
     }

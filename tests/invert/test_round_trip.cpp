@@ -165,7 +165,7 @@ TEST(Band, CoversTheKneeForTheSphereAndThePipette) {
 }
 
 // Between two readings, at a knee neither sees, the smoothness prior alone narrows the band.
-// With the grid's coarseness in the band and the bounds where they are wider than 40 pp, the
+// With the grid's coarseness in the band and the bounds where the readings cannot tell, the
 // 90 % band covers sample 4's knee midway between readings at 0.97 (sphere) and 0.86 (pipette;
 // its misses are 0.5 pp at 98 %, above the knee), and the knee itself is said to be open.
 TEST(Band, CoversTheKneeBetweenReadingsWhereTheReadingsCannotTell) {
