@@ -54,7 +54,7 @@ const char* Engine::integrator_name() const {
   return parts_->integrator->name();
 }
 int Engine::threads() const {
-  return parts_->local ? parts_->sync_threads : parts_->threads;
+  return parts_->local ? std::max(parts_->sync_threads, parts_->threads) : parts_->threads;
 }
 double Engine::freeze_height() const {
   return parts_->freeze.height;

@@ -8,6 +8,7 @@
 
 #include "core/engine/contact/box_registry.h"
 #include "core/engine/integrate/free_flight.h"
+#include "core/engine/threads_for.h"
 #include "core/physics/stokes.h"
 #include "core/run/stage_setups.h"
 #include "engine_test_support.h"
@@ -274,6 +275,44 @@ TEST(LocalSteps, WithoutSuspensionContactsLanesGiveTheSameBitsOnOneThreadOrTwo) 
   EXPECT_GT(one.stats().retired, 100u);
   EXPECT_EQ(two.local_violation(), "");
   std::filesystem::remove(checkpoint);
+}
+
+// Where grains meet everywhere the members' step (lists, integration, projection) goes on the
+// engine's threads when they are many (core/engine/threads_for.h): a crowd of 4000 grains gives
+// the same bits on one thread and two, its members passing back and forth across the count
+// where the second thread starts.
+TEST(LocalSteps, WithContactsEverywhereTheMembersStepGivesTheSameBitsOnOneThreadOrTwo) {
+  Scene scene = scene_with("di_felice", "exponential");
+  scene.integrator.local_steps = true;
+  const double hw = scene.cylinder.half_width();
+  const auto grains = test::scattered(
+      4000, -0.5 * hw, 0.5 * hw, 0.0005, 0.05,
+      [](int k) { return k % 4 == 0 ? 70e-6 : (k % 4 == 1 ? 30e-6 : 5e-6); }, 5, 0.0);
+  scene.integrator.threads = 1;
+  Engine one(engine_setup(scene), sample_of(grains));
+  scene.integrator.threads = 2;
+  Engine two(engine_setup(scene), sample_of(grains));
+  ASSERT_EQ(one.threads(), 1);
+  ASSERT_EQ(two.threads(), 2);
+  std::size_t most = 0, least = grains.size();
+  while (one.time() < 3) {
+    one.step(3);
+    two.step(3);
+    ASSERT_EQ(one.time(), two.time()) << "step " << one.stats().steps;
+    most = std::max(most, one.stats().members);
+    least = std::min(least, one.stats().members);
+  }
+  const Particles& a = one.particles();
+  const Particles& b = two.particles();
+  for (std::size_t i = 0; i < grains.size(); ++i) {
+    ASSERT_EQ(a.x[i], b.x[i]) << i;
+    ASSERT_EQ(a.y[i], b.y[i]) << i;
+    ASSERT_EQ(a.vy[i], b.vy[i]) << i;
+  }
+  EXPECT_EQ(two.stats().steps, one.stats().steps);
+  EXPECT_EQ(two.stats().particle_steps, one.stats().particle_steps);
+  EXPECT_GE(most, kThreadedFrom) << "the second thread never started";
+  EXPECT_LT(least, kThreadedFrom) << "the second thread never stopped";
 }
 
 // Grains that fall below every instrument retire onto the coarse bed. Those that stay above are

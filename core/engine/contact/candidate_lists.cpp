@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/engine/threads_for.h"
+
 namespace sedem {
 
 void CandidateLists::configure(int threads) {
@@ -32,7 +34,9 @@ void CandidateLists::build(const NeighbourGrid& grid, std::size_t n, const doubl
   const auto& order = grid.order();
   list_start_.resize(n + 1);
   list_start_[0] = 0;
-#pragma omp parallel num_threads(threads_) if (threads_ > 1)
+  const int threads = threads_for(threads_, n);
+  for (int t = threads; t < threads_; ++t) local_lists_[std::size_t(t)].clear();
+#pragma omp parallel num_threads(threads) if (threads > 1)
   {
     auto& mine = local_lists_[std::size_t(omp_get_thread_num())];
     mine.clear();
@@ -77,7 +81,7 @@ bool CandidateLists::moved_beyond_margin(const EngineState& s) {
   const double* d = s.diameter.data();
   const double share = 0.99 * 0.5 * margin;
   const bool own = margin_per_grain;
-  const int threads = threads_;
+  const int threads = threads_for(threads_, n);
   std::vector<double>& top = top_excess_;
   top.assign(2 * std::size_t(threads), -HUGE_VAL);  // no allocation after the first step
 #pragma omp parallel num_threads(threads) if (threads > 1)

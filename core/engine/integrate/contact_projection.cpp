@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "core/engine/contact/walls.h"
+#include "core/engine/threads_for.h"
 
 namespace sedem {
 
@@ -104,7 +105,9 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
   const Walls walls{model_.half_width};
   const bool warm = warm_.size() > 0;
 
-#pragma omp parallel num_threads(threads_) if (threads_ > 1)
+  const int threads = threads_for(threads_, n);
+  for (int t = threads; t < threads_; ++t) found_[std::size_t(t)].clear();
+#pragma omp parallel num_threads(threads) if (threads > 1)
   {
     const std::size_t t = std::size_t(omp_get_thread_num());
     auto& found = found_[t];

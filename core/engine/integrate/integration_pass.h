@@ -12,6 +12,7 @@
 
 #include "core/engine/instability.h"
 #include "core/engine/state/engine_state.h"
+#include "core/engine/threads_for.h"
 
 namespace sedem::integration {
 
@@ -44,6 +45,8 @@ inline void check(const EngineState& s, std::size_t i, double runaway, Blowup& b
 // `sums` is the caller's, reused every step (no allocation per step).
 template <class Body>
 ThreadSums integrate(int threads, std::size_t n, std::vector<ThreadSums>& sums, Body&& body) {
+  threads = threads_for(threads, n);
+  // Only the threads this pass runs on: a slot left from a pass with more would join the sums.
   sums.resize(std::size_t(std::max(1, threads)));
   // One thread: no parallel region at all. Entering one, even with if(false), costs local
   // steps (thousands of short steps of a few members a second) about 7 % of their time.

@@ -60,14 +60,19 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
   if (n < 2048) threads = 1;
   model = force_model(setup, sample.particle_density);
   // Local time stepping needs no force pass, so not with lubrication. Its syncs are taken one
-  // at a time, in time order, where grains meet; where the free grains pass each other (no
-  // suspension contacts), each column of voidage cells is a lane of its own, and the lanes go
-  // on the engine's threads (local_lanes.cpp). The members' step is serial.
+  // at a time, in time order, where grains meet, and the members' step (lists, integration,
+  // projection) has the engine's threads when they are many (threads_for.h); where the free
+  // grains pass each other (no suspension contacts), each column of voidage cells is a lane of
+  // its own, the lanes go on the engine's threads (local_lanes.cpp), and the few members' step
+  // has one. The voidage of the local steps changes a grain at a time, serially; its first
+  // count is serial too, as a sum over threads would round differently on each thread count.
   local = integrator_method(setup.integrator) == IntegratorMethod::exponential &&
           setup.integrator.local_steps && !model.lubrication;
   if (local) {
-    if (!model.contact || !model.suspension_contacts) sync_threads = threads;
-    threads = 1;
+    if (!model.contact || !model.suspension_contacts) {
+      sync_threads = threads;
+      threads = 1;
+    }
   }
   if (integrator_method(setup.integrator) == IntegratorMethod::explicit_euler)
     model.skin = 0.25;
@@ -103,7 +108,7 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
                  dmax * (1 + reach + model.skin + lists.margin), cyl.half_width(), cyl.height,
                  threads);
   voidage.configure(setup.forces.voidage_cell, cyl.half_width(), cyl.height, cyl.slab_thickness(),
-                    setup.forces.min_voidage, threads);
+                    setup.forces.min_voidage, local ? 1 : threads);
   pass.configure(model, threads);
   lists.configure(threads);
   carried = local && setup.integrator.carried_fraction > 0 && model.contact;

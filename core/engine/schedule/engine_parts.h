@@ -56,7 +56,8 @@ struct EngineParts {
   FreezeTask freeze;
   int threads = 1;
   // Local time stepping's syncs, taken lane by lane when the free grains pass each other
-  // (schedule/local_lanes.cpp); the members' step has `threads` (one).
+  // (schedule/local_lanes.cpp); the members' step has `threads` (one there; the engine's
+  // where grains meet everywhere).
   int sync_threads = 1;
   bool pass_needed = true;  // see needs_force_pass
   // Whether free grains coast on windows of their own (the local stepper).
