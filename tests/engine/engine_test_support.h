@@ -1,5 +1,7 @@
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <random>
 #include <vector>
@@ -67,6 +69,22 @@ inline Scene scene_with(const std::string& drag, const std::string& method, int 
   scene.integrator.retire_below = false;
   scene.integrator.threads = threads;
   return scene;
+}
+
+// The scene on `threads` threads.
+inline Scene on_threads(Scene scene, int threads) {
+  scene.integrator.threads = threads;
+  return scene;
+}
+
+// Every grain where, and as fast, as in the reference run, to the bit.
+inline void expect_same_bits(const Particles& reference, const Particles& other) {
+  ASSERT_EQ(reference.size(), other.size());
+  for (std::size_t i = 0; i < reference.size(); ++i) {
+    ASSERT_EQ(reference.x[i], other.x[i]) << i;
+    ASSERT_EQ(reference.y[i], other.y[i]) << i;
+    ASSERT_EQ(reference.vy[i], other.vy[i]) << i;
+  }
 }
 
 }  // namespace sedem::test

@@ -244,10 +244,8 @@ TEST(LocalSteps, WithoutSuspensionContactsLanesGiveTheSameBitsOnOneThreadOrTwo) 
   }
   const std::string checkpoint =
       (std::filesystem::temp_directory_path() / "sedem_lanes_test.ckpt").string();
-  scene.integrator.threads = 1;
-  Engine one(engine_setup(scene), sample_of(grains));
-  scene.integrator.threads = 2;
-  Engine two(engine_setup(scene), sample_of(grains));
+  Engine one(engine_setup(test::on_threads(scene, 1)), sample_of(grains));
+  Engine two(engine_setup(test::on_threads(scene, 2)), sample_of(grains));
   ASSERT_EQ(one.threads(), 1);
   ASSERT_EQ(two.threads(), 2);
   for (int k = 1; k <= 20; ++k) {
@@ -255,18 +253,12 @@ TEST(LocalSteps, WithoutSuspensionContactsLanesGiveTheSameBitsOnOneThreadOrTwo) 
     two.advance_to(k);
     if (k == 10) two.save_checkpoint(checkpoint);
   }
-  Engine resumed(engine_setup(scene), sample_of(grains));
+  Engine resumed(engine_setup(test::on_threads(scene, 2)), sample_of(grains));
   resumed.load_checkpoint(checkpoint);
   for (int k = 11; k <= 20; ++k) resumed.advance_to(k);
   for (const Engine* e : {&two, &resumed}) {
     SCOPED_TRACE(e == &two ? "two threads" : "resumed on two threads");
-    const Particles& a = one.particles();
-    const Particles& b = e->particles();
-    for (std::size_t i = 0; i < grains.size(); ++i) {
-      ASSERT_EQ(a.x[i], b.x[i]) << i;
-      ASSERT_EQ(a.y[i], b.y[i]) << i;
-      ASSERT_EQ(a.vy[i], b.vy[i]) << i;
-    }
+    test::expect_same_bits(one.particles(), e->particles());
     EXPECT_EQ(e->stats().steps, one.stats().steps);
     EXPECT_EQ(e->stats().windows, one.stats().windows);
     EXPECT_EQ(e->stats().particle_steps, one.stats().particle_steps);
@@ -288,10 +280,8 @@ TEST(LocalSteps, WithContactsEverywhereTheMembersStepGivesTheSameBitsOnOneThread
   const auto grains = test::scattered(
       4000, -0.5 * hw, 0.5 * hw, 0.0005, 0.05,
       [](int k) { return k % 4 == 0 ? 70e-6 : (k % 4 == 1 ? 30e-6 : 5e-6); }, 5, 0.0);
-  scene.integrator.threads = 1;
-  Engine one(engine_setup(scene), sample_of(grains));
-  scene.integrator.threads = 2;
-  Engine two(engine_setup(scene), sample_of(grains));
+  Engine one(engine_setup(test::on_threads(scene, 1)), sample_of(grains));
+  Engine two(engine_setup(test::on_threads(scene, 2)), sample_of(grains));
   ASSERT_EQ(one.threads(), 1);
   ASSERT_EQ(two.threads(), 2);
   std::size_t most = 0, least = grains.size();
@@ -302,13 +292,7 @@ TEST(LocalSteps, WithContactsEverywhereTheMembersStepGivesTheSameBitsOnOneThread
     most = std::max(most, one.stats().members);
     least = std::min(least, one.stats().members);
   }
-  const Particles& a = one.particles();
-  const Particles& b = two.particles();
-  for (std::size_t i = 0; i < grains.size(); ++i) {
-    ASSERT_EQ(a.x[i], b.x[i]) << i;
-    ASSERT_EQ(a.y[i], b.y[i]) << i;
-    ASSERT_EQ(a.vy[i], b.vy[i]) << i;
-  }
+  test::expect_same_bits(one.particles(), two.particles());
   EXPECT_EQ(two.stats().steps, one.stats().steps);
   EXPECT_EQ(two.stats().particle_steps, one.stats().particle_steps);
   EXPECT_GE(most, kThreadedFrom) << "the second thread never started";
