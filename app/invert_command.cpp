@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <numbers>
 
 #include <nlohmann/json.hpp>
@@ -79,12 +80,13 @@ const std::vector<std::string> kOutputs = {
 
 // A standard reduction's diameter that is no number or coarser than any grain a sedimentation
 // test sorts comes from a time that cannot be right: refused, naming the row.
+// `where(i)` names reading i for a message: its row, and its line in the file if known.
 void check_diameters(const std::vector<invert::Measurement>& data,
-                     const std::vector<GradingPoint>& standard) {
+                     const std::vector<GradingPoint>& standard,
+                     const std::function<std::string(std::size_t)>& where) {
   for (std::size_t i = 0; i < standard.size() && i < data.size(); ++i)
     if (!(standard[i].diameter > 0 && standard[i].diameter <= kMaxLabDiameter))
-      throw InvalidSetup("row " + std::to_string(i + 1) +
-                         ", time_min = " + number(data[i].time / 60.0) +
+      throw InvalidSetup(where(i) + ", time_min = " + number(data[i].time / 60.0) +
                          ": the reduction gives a diameter of " + number(standard[i].diameter) +
                          " m, outside (0, " + number(kMaxLabDiameter) + "] m: check the time");
 }
@@ -203,7 +205,8 @@ int run_invert(const InvertOptions& o) {
                                         ? lab_method_name(method)
                                         : invert::reading_format(test).standard_name;
   Scene scene;
-  std::vector<LabReading> lab;  // the 152H's readings as the laboratory took them
+  std::vector<LabReading> lab;     // the 152H's readings as the laboratory took them
+  std::vector<std::size_t> lines;  // the sphere's or pipette's readings' lines in their file
   // A run's true curve: its sample's size classes, as the run drew them from its scene.
   std::vector<SizeClass> truth;
   if (!o.run.empty()) {
@@ -249,12 +252,21 @@ int run_invert(const InvertOptions& o) {
       data.push_back(
           {r.time, r.reading - r.composite_correction, r.reading + r.meniscus_correction});
   } else {
-    data = invert::read_measurements(table, test);
+    data = invert::read_measurements(table, test, &lines);
     scene = make_setup(o, o.temperature_c.value_or(20.0));
-    invert::validate_measurements(test_setup(scene), test, data, {});
+    try {
+      invert::validate_measurements(test_setup(scene), test, data, {});
+    } catch (const invert::InvalidInversionInput& e) {
+      // The message counts readings; the laboratory looks for a line of its file.
+      if (e.row() >= lines.size()) throw;
+      throw InvalidSetup(table.place + " " + std::to_string(lines[e.row()]) + ": " + e.what());
+    }
     standard = invert::standard_reduction(test_setup(scene), test, data);
   }
-  check_diameters(data, standard);
+  check_diameters(data, standard, [&](std::size_t i) {
+    return "row " + std::to_string(i + 1) +
+           (i < lines.size() ? " (" + table.place + " " + std::to_string(lines[i]) + ")" : "");
+  });
   invert::InversionOptions options;
   options.resolution = o.resolution;
   options.refine = o.refine;

@@ -21,7 +21,8 @@ std::vector<Measurement> read_measurements_csv(std::istream& in, Test test) {
   return read_measurements(read_lab_text(in), test);
 }
 
-std::vector<Measurement> read_measurements(const LabTable& table, Test test) {
+std::vector<Measurement> read_measurements(const LabTable& table, Test test,
+                                           std::vector<std::size_t>* lines_out) {
   if (test == Test::hydrometer)
     throw std::invalid_argument("read_measurements: the 152H's readings are read by core/lab");
   std::vector<Measurement> out;
@@ -31,6 +32,7 @@ std::vector<Measurement> read_measurements(const LabTable& table, Test test) {
     check_lab_time_min(lines[i], rows[i][0], table.place);
     out.push_back({rows[i][0] * 60.0, rows[i][1]});
   }
+  if (lines_out) *lines_out = lines;
   return out;
 }
 

@@ -29,7 +29,10 @@ const ReadingFormat& reading_format(Test test);
 std::vector<Measurement> read_measurements_csv(std::istream& in, Test test);
 // The same from a table already read (a text file or a workbook's sheet); the columns may be
 // named in the laboratory's words and units ("time (s)", "apparent mass (g)", "dry mass [mg]").
-std::vector<Measurement> read_measurements(const LabTable& table, Test test);
+// `lines`, if given, receives each reading's line in the file (the table's `place` says what
+// its numbers count), so that a message about the n-th reading can name where it is.
+std::vector<Measurement> read_measurements(const LabTable& table, Test test,
+                                           std::vector<std::size_t>* lines = nullptr);
 
 // The standard reduction of the sphere's or the pipette's readings, as a DEM run reduces
 // them: Stokes' diameter at the instrument's depth (Eq. 16), Eq. 22 (sphere) or Eq. 17

@@ -271,11 +271,14 @@ TEST(InvertCommand, BadReadingsExitTwoNamingTheValue) {
   EXPECT_NE(r.output.find("readings = 2: the inversion needs 3 readings or more"),
             std::string::npos)
       << r.output;
-  r = test::run_sedem("invert " +
-                      write("back.csv", "time_min,dry_mass_g\n1,1.4\n4,1.1\n2,0.9\n").string() +
-                      " --test pipette --out " + (kOut / "x").string());
+  r = test::run_sedem(
+      "invert " +
+      write("back.csv", "# pipette, 25 mL\ntime_min,dry_mass_g\n1,1.4\n\n4,1.1\n2,0.9\n").string() +
+      " --test pipette --out " + (kOut / "x").string());
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.output.find("row 3, time_min = 2: times must increase"), std::string::npos)
+  // The message names the line of the file too (a note, the header and a blank line come
+  // before the third reading).
+  EXPECT_NE(r.output.find("line 6: row 3, time_min = 2: times must increase"), std::string::npos)
       << r.output;
 }
 
