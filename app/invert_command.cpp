@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <numbers>
 
 #include <nlohmann/json.hpp>
@@ -78,15 +77,22 @@ const std::vector<std::string> kOutputs = {
     "inverted_curve.csv", "readings_fit.csv", "invert.json",       "invert.png",       "invert.csv",
     "report.html",        "whole_curve.csv",  "grading_curve.png", "grading_curve.csv"};
 
+// Where reading i stands in its file ("line 6: "), for a message that counts readings (rows):
+// a note or a blank line moves the one from the other. Empty where the lines are not known.
+std::string line_of(const std::vector<std::size_t>& lines, const std::string& place,
+                    std::size_t i) {
+  return i < lines.size() ? place + " " + std::to_string(lines[i]) + ": " : "";
+}
+
 // A standard reduction's diameter that is no number or coarser than any grain a sedimentation
-// test sorts comes from a time that cannot be right: refused, naming the row.
-// `where(i)` names reading i for a message: its row, and its line in the file if known.
+// test sorts comes from a time that cannot be right: refused, naming the row (and its line).
 void check_diameters(const std::vector<invert::Measurement>& data,
                      const std::vector<GradingPoint>& standard,
-                     const std::function<std::string(std::size_t)>& where) {
+                     const std::vector<std::size_t>& lines, const std::string& place) {
   for (std::size_t i = 0; i < standard.size() && i < data.size(); ++i)
     if (!(standard[i].diameter > 0 && standard[i].diameter <= kMaxLabDiameter))
-      throw InvalidSetup(where(i) + ", time_min = " + number(data[i].time / 60.0) +
+      throw InvalidSetup(line_of(lines, place, i) + "row " + std::to_string(i + 1) +
+                         ", time_min = " + number(data[i].time / 60.0) +
                          ": the reduction gives a diameter of " + number(standard[i].diameter) +
                          " m, outside (0, " + number(kMaxLabDiameter) + "] m: check the time");
 }
@@ -259,14 +265,11 @@ int run_invert(const InvertOptions& o) {
     } catch (const invert::InvalidInversionInput& e) {
       // The message counts readings; the laboratory looks for a line of its file.
       if (e.row() >= lines.size()) throw;
-      throw InvalidSetup(table.place + " " + std::to_string(lines[e.row()]) + ": " + e.what());
+      throw InvalidSetup(line_of(lines, table.place, e.row()) + e.what());
     }
     standard = invert::standard_reduction(test_setup(scene), test, data);
   }
-  check_diameters(data, standard, [&](std::size_t i) {
-    return "row " + std::to_string(i + 1) +
-           (i < lines.size() ? " (" + table.place + " " + std::to_string(lines[i]) + ")" : "");
-  });
+  check_diameters(data, standard, lines, table.place);
   invert::InversionOptions options;
   options.resolution = o.resolution;
   options.refine = o.refine;

@@ -1,10 +1,9 @@
 #include "core/engine/schedule/engine_parts.h"
 
-#include <cmath>
-
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/engine/instability.h"
 #include "core/physics/stokes.h"
@@ -68,11 +67,9 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
   // count is serial too, as a sum over threads would round differently on each thread count.
   local = integrator_method(setup.integrator) == IntegratorMethod::exponential &&
           setup.integrator.local_steps && !model.lubrication;
-  if (local) {
-    if (!model.contact || !model.suspension_contacts) {
-      sync_threads = threads;
-      threads = 1;
-    }
+  if (local && (!model.contact || !model.suspension_contacts)) {
+    sync_threads = threads;
+    threads = 1;
   }
   if (integrator_method(setup.integrator) == IntegratorMethod::explicit_euler)
     model.skin = 0.25;
