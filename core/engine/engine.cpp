@@ -15,7 +15,8 @@
 namespace sedem {
 
 namespace {
-constexpr char kMagic[8] = {'S', 'E', 'D', 'E', 'M', 'C', 'K', '1'};
+// The last byte is the format's version: 2 keeps the candidate lists' rows in the grid's order.
+constexpr char kMagic[8] = {'S', 'E', 'D', 'E', 'M', 'C', 'K', '2'};
 
 // The particle state and the lists' build in checkpoint order, for saving and loading alike
 // (`Parts`: EngineParts, const when saving).
@@ -29,6 +30,7 @@ void checkpoint_fields(Parts& e, Vector&& vector, Value&& value) {
   vector(e.lists.x0);
   vector(e.lists.y0);
   value(e.lists.stale);
+  value(e.lists.grid_rows);
   value(e.resort.done_at);
 }
 
@@ -181,8 +183,13 @@ void Engine::load_checkpoint(std::istream& in, const std::string& path) {
   EngineParts& e = *parts_;
   char magic[sizeof kMagic];
   in.read(magic, sizeof magic);
-  if (!in || std::memcmp(magic, kMagic, sizeof kMagic) != 0)
+  if (!in || std::memcmp(magic, kMagic, sizeof kMagic - 1) != 0)
     throw std::runtime_error("not a sedem checkpoint: " + path);
+  if (magic[sizeof kMagic - 1] != kMagic[sizeof kMagic - 1])
+    throw std::runtime_error(
+        "checkpoint " + path + " was written by another version of sedem (format " +
+        std::string(1, magic[sizeof kMagic - 1]) + ", this one reads " +
+        std::string(1, kMagic[sizeof kMagic - 1]) + "): run it again from the start");
   std::uint64_t members = 0;
   read_value(in, members);
   if (e.local && in && members <= e.sample.particles.size()) {  // local steps: the members only
@@ -251,8 +258,10 @@ void Engine::load_checkpoint(std::istream& in, const std::string& path) {
   e.integrator->load(in);
   if (local_) local_->load(in);
   if (!in) throw std::runtime_error("truncated checkpoint " + path);
-  // The lists as they were: built from the saved build positions, in the saved order.
-  if (!e.lists.stale) e.lists.rebuild_at_build_positions(e.state, e.grid, e.local);
+  // The lists as they were: built from the saved build positions, in the saved order, and the
+  // rows appended since.
+  if (!e.lists.stale)
+    e.lists.rebuild_at_build_positions(e.state, e.grid, e.local, e.lists.grid_rows);
   synced_step_ = -1;
 }
 

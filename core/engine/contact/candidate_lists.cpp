@@ -21,12 +21,29 @@ void CandidateLists::rebuild(const EngineState& s, NeighbourGrid& grid, bool fro
 }
 
 void CandidateLists::rebuild_at_build_positions(const EngineState& s, NeighbourGrid& grid,
-                                                bool frozen_aware) {
-  const std::size_t n = s.size();
+                                                bool frozen_aware, std::size_t rows) {
+  const std::size_t n = std::min(rows, s.size());
   grid.build(n, x0.data(), y0.data(), search.data());
   build(grid, n, x0.data(), y0.data(), search.data(), frozen_aware ? s.frozen.data() : nullptr);
+  grid_rows = n;
   stale = false;
-  appended_only = false;
+  extend(s);
+}
+
+void CandidateLists::extend(const EngineState& s) {
+  if (stale) return;  // the next build takes them
+  if (list_start_.empty()) list_start_.push_back(0);
+  const std::size_t n = s.size();
+  const double* bx = x0.data();
+  const double* by = y0.data();
+  const double* radius = search.data();
+  for (std::size_t k = rows(); k < n; ++k) {
+    for (std::size_t m = 0; m < k; ++m) {
+      const double dx = bx[m] - bx[k], dy = by[m] - by[k], reach = radius[k] + radius[m];
+      if (dx * dx + dy * dy < reach * reach) list_.push_back(std::uint32_t(m));
+    }
+    list_start_.push_back(std::uint32_t(list_.size()));
+  }
 }
 
 void CandidateLists::build(const NeighbourGrid& grid, std::size_t n, const double* bx,

@@ -23,14 +23,29 @@ class CandidateLists {
   // particle lists its coarser partners only: a same-level pair of a frozen and a moving
   // particle is found from the moving side, and a bed of frozen grains costs little.
   void rebuild(const EngineState& s, NeighbourGrid& grid, bool frozen_aware);
-  // The same from the build positions already held (a checkpoint's), for the first n particles.
-  void rebuild_at_build_positions(const EngineState& s, NeighbourGrid& grid, bool frozen_aware);
+  // The same from the build positions already held (a checkpoint's), for the first `rows`
+  // particles (all when rows exceeds the state).
+  void rebuild_at_build_positions(const EngineState& s, NeighbourGrid& grid, bool frozen_aware,
+                                  std::size_t rows = SIZE_MAX);
+  // Rows for the particles appended to the state since the last build or extension, without
+  // touching the others (a grain joining the local stepper's members re-indexes nobody, and
+  // a full build costs a thousand times its share): row k lists every particle m < k within
+  // search[k] + search[m] of the build positions, its own x0, y0 those it had when appended.
+  // So a pair with an appended particle is held once, in the later one's row. Not for the
+  // force pass (it reads the grid's rows only; the global stepper never appends).
+  void extend(const EngineState& s);
   // Valid while no particle has moved more than half the margin the radii carry beyond the
   // interaction range: see the comment at its definition.
   bool moved_beyond_margin(const EngineState& s);
-  // The lists: partners of grid.order()[k] are list()[list_start()[k] .. [k + 1]).
+  // The lists: row k lists the partners of particle_of(k). The first grid_rows rows follow
+  // the grid's order (a same-level pair in both rows, a cross-level pair in the finer side's);
+  // the rest are extend()'s, row k particle k's.
   const std::vector<std::uint32_t>& list_start() const { return list_start_; }
   const std::vector<std::uint32_t>& list() const { return list_; }
+  std::size_t rows() const { return list_start_.empty() ? 0 : list_start_.size() - 1; }
+  std::uint32_t particle_of(std::size_t row, const NeighbourGrid& grid) const {
+    return row < grid_rows ? grid.order()[row] : std::uint32_t(row);
+  }
   // Working memory of the lists themselves (the radii and build positions not included).
   std::size_t bytes() const;
 
@@ -45,11 +60,8 @@ class CandidateLists {
   double margin_of(std::size_t i, double diameter) const {
     return margin_per_grain ? search[i] - 0.5 * range * diameter : 0.5 * margin * diameter;
   }
-  bool stale = true;  // to be rebuilt before the next pass reads them
-  // Stale only by particles appended to the state since the build: the lists still hold every
-  // pair among the others (carried steps choose a step from them meanwhile).
-  bool appended_only = false;
-  std::size_t built_count() const { return list_start_.empty() ? 0 : list_start_.size() - 1; }
+  bool stale = true;            // to be rebuilt before the next pass reads them
+  std::uint64_t grid_rows = 0;  // the rows the last build put in the grid's order
 
  private:
   void build(const NeighbourGrid& grid, std::size_t n, const double* bx, const double* by,

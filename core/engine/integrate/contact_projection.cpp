@@ -87,9 +87,10 @@ void ContactProjection::load(std::istream& in) {
   particle_.clear();
 }
 
-// The constraints at the free positions, in the grid's order of their first particle: walls,
-// then pairs (a same-level pair from its lower sample index, a cross-level pair from its finer
-// side, which alone holds it in its list).
+// The constraints at the free positions, in the lists' row order of their first particle:
+// walls, then pairs (in the grid's rows a same-level pair from its lower sample index, a
+// cross-level pair from its finer side, which alone holds it in its list; in an appended row
+// every pair, held there alone).
 void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
                                 const CandidateLists& lists) {
   const std::size_t n = s.size();
@@ -99,7 +100,7 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
   const std::uint32_t* origin = s.origin.data();
   const std::uint8_t* frozen = s.frozen.data();
   const std::uint8_t* held = held_.data();
-  const auto& order = grid.order();
+  const std::size_t ordered = lists.grid_rows;
   const std::uint32_t* start = lists.list_start().data();
   const std::uint32_t* list = lists.list().data();
   const Walls walls{model_.half_width};
@@ -114,7 +115,8 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
     found.clear();
 #pragma omp for schedule(static)
     for (std::size_t k = 0; k < n; ++k) {
-      const std::uint32_t i = order[k];
+      const std::uint32_t i = lists.particle_of(k, grid);
+      const bool alone = k >= ordered;  // an appended row: its pairs are held nowhere else
       const double ri = 0.5 * d[i];
       const std::uint32_t oi = origin[i];
       const bool held_i = warm && held[oi];
@@ -128,13 +130,14 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
         if (bottom > -kSkin * ri || floor_force > 0)
           found.push_back({i, kFloor, 0, 0, floor_force, 0, 0, false});
       }
-      const int own = grid.level(i);
+      const int own = alone ? -1 : grid.level(i);
       for (std::uint32_t c = start[k], e = start[k + 1]; c < e; ++c) {
         const std::uint32_t j = list[c];
         if (frozen[i] && frozen[j]) continue;
         // A same-level pair is taken once: from its moving side if one is frozen (a frozen
         // particle's list may hold its coarser partners only), else from its lower sample index.
-        if (grid.level(j) == own && (frozen[i] != frozen[j] ? frozen[i] != 0 : origin[j] < oi))
+        if (!alone && grid.level(j) == own &&
+            (frozen[i] != frozen[j] ? frozen[i] != 0 : origin[j] < oi))
           continue;
         const double dx = x[j] - x[i], dy = y[j] - y[i];
         const double dist2 = dx * dx + dy * dy;

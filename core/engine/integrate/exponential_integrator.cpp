@@ -177,8 +177,7 @@ class ExponentialIntegrator final : public Integrator {
 
   double choose_step(const EngineState& s) {
     const CandidateLists& lists = *ctx_.lists;
-    return carried_ && (!lists.stale || lists.appended_only) ? carried_step(s)
-                                                             : limited(fastest(s));
+    return carried_ && !lists.stale ? carried_step(s) : limited(fastest(s));
   }
 
   // Carried steps: the grains held together by the forces the last step left (the projection's
@@ -242,16 +241,13 @@ class ExponentialIntegrator final : public Integrator {
       }
       rate = std::max(rate, floored_speed(s, k) / (c * pace));
     }
-    const auto& order = ctx_.grid->order();
     const std::vector<std::uint32_t>& start = lists.list_start();
     const std::vector<std::uint32_t>& list = lists.list();
-    // Particles appended since the build (appended_only) have no lists: the stepper bounds
-    // their pairs itself (pair_rate).
-    const std::size_t listed = std::min(n, lists.built_count());
+    const std::size_t listed = std::min(n, lists.rows());
     // A pair closes at most at the sum of both speeds (floors included): most pairs are then
     // far enough apart not to bind, which their squared distance tells without a root.
     for (std::size_t k = 0; k < listed; ++k) {
-      const std::uint32_t i = order[k];
+      const std::uint32_t i = lists.particle_of(k, *ctx_.grid);
       if (i >= n) continue;
       for (std::uint32_t q = start[k]; q < start[k + 1]; ++q) {
         const std::uint32_t j = list[q];
@@ -266,8 +262,9 @@ class ExponentialIntegrator final : public Integrator {
     return rate > 0 ? std::min(ceiling_, 1.0 / rate) : ceiling_;
   }
 
- public:
-  double pair_rate(const EngineState& s, std::size_t i, std::size_t j) const override {
+  // The inverse of the longest step in which particles i and j (state indices) close by at
+  // most their gap plus crossing_fraction (r_i + r_j).
+  double pair_rate(const EngineState& s, std::size_t i, std::size_t j) const {
     if (!carried_ || (s.frozen[i] && s.frozen[j])) return 0;
     const double ri = 0.5 * s.diameter[i], rj = 0.5 * s.diameter[j];
     const double dvx = s.vx[i] - s.vx[j], dvy = s.vy[i] - s.vy[j];
@@ -276,12 +273,6 @@ class ExponentialIntegrator final : public Integrator {
     const double gap = std::max(0.0, std::sqrt(dx * dx + dy * dy) - ri - rj);
     return closing / (gap + config_.crossing_fraction * (ri + rj));
   }
-  double grain_rate(const EngineState& s, std::size_t k) const override {
-    if (!carried_ || s.frozen[k]) return 0;
-    return floored_speed(s, k) / (config_.crossing_fraction * 0.5 * s.diameter[k]);
-  }
-
- private:
   // A moving grain's clear-water settling speed, which a free grain may reach within a step (0
   // for a frozen one), and its speed counted at least at that.
   double floor_of(const EngineState& s, std::size_t k) const {

@@ -105,11 +105,6 @@ class Integrator {
   // carried_fraction / crossing_fraction, or its own radius if that is more (or it touches
   // none); a step lets it travel crossing_fraction of that. nullptr without carried steps.
   virtual const std::vector<double>* carrier_radii() const { return nullptr; }
-  // Carried steps: the inverse of the longest step in which particles i and j (state indices)
-  // close by at most their gap plus crossing_fraction (r_i + r_j); 0 without carried steps.
-  virtual double pair_rate(const EngineState&, std::size_t, std::size_t) const { return 0; }
-  // Carried steps: the same for particle k alone, at its own radius (one that touches nothing).
-  virtual double grain_rate(const EngineState&, std::size_t) const { return 0; }
 };
 
 std::unique_ptr<Integrator> make_integrator(const IntegratorConfig& config,

@@ -142,15 +142,25 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
   if (!pass_needed && freeze.enabled()) forces.stiffness.resize(n);
 }
 
-void EngineParts::rebuild_lists() {
-  // Carried steps: a member's margin covers what its carrier lets it travel between two
-  // builds; it only grows while it is a member (a step chosen before the build stays safe).
+// Carried steps: a member's margin covers what its carrier lets it travel between two
+// builds; it only grows while it is a member (a step chosen before the build stays safe).
+void EngineParts::widen_search(std::size_t from) {
   if (const std::vector<double>* carrier = carried ? integrator->carrier_radii() : nullptr)
-    for (std::size_t k = 0; k < state.size(); ++k)
+    for (std::size_t k = from; k < state.size(); ++k)
       lists.search[k] = std::max(lists.search[k], 0.5 * state.diameter[k] * lists.range +
                                                       lists.margin * (*carrier)[state.origin[k]]);
+}
+
+void EngineParts::rebuild_lists() {
+  widen_search(0);
   lists.rebuild(state, grid, local);
   ++stats.list_builds;
+}
+
+void EngineParts::extend_lists() {
+  if (lists.stale || lists.rows() >= state.size()) return;
+  widen_search(lists.rows());
+  lists.extend(state);
 }
 
 void EngineParts::resort_and_rebuild_lists() {

@@ -36,8 +36,12 @@ struct EngineParts {
   void rebuild_lists();
   // The same, the state first re-sorted in grid order if the resort task is due.
   void resort_and_rebuild_lists();
+  // Rows for the members appended since (CandidateLists::extend), unless the lists are stale.
+  void extend_lists();
   // Throws InstabilityError for a blow-up the integrator or the force pass noted.
   [[noreturn]] void throw_blowup(const Blowup& b, double at) const;
+  // Carried steps: the search radii of particles from..end follow their carriers.
+  void widen_search(std::size_t from);
 
   EngineSetup setup;
   Sample sample;  // its particles are brought up to date on demand (Engine::particles)

@@ -111,6 +111,7 @@ void LocalStepper::remove_member(std::size_t k) {
   e_.lists.y0.resize(last);
   e_.forces.stiffness.resize(last);
   members_changed_ = true;
+  e_.lists.stale = true;  // the last member took k's place in the rows
 }
 
 // Moving members that touch nothing coast again where a window fits.

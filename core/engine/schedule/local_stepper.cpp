@@ -149,15 +149,12 @@ void LocalStepper::step(double limit) {
     for (std::uint32_t id : failed_)
       if (kind_[id] == GrainKind::coasting) engage(id, coasting_at(id, e_.time), false);
     wake_around(kNoMember);
-    if (!e_.lists.stale) e_.lists.appended_only = true;  // the joiners come last
-    e_.lists.stale = true;
     index_members();
-    // Carried steps: the members before them have not moved, their bound stands.
-    if (!e_.carried || !e_.lists.appended_only) e_.integrator->refresh_step(e_.state);
+    e_.extend_lists();  // the joiners come last, the others' rows stand
+    e_.integrator->refresh_step(e_.state);
     members_changed_ = false;
     moving = count_moving();
-    dt = moving ? std::min(e_.integrator->next_step(e_.facts), joiners_step())
-                : e_.setup.integrator.max_step;
+    dt = moving ? e_.integrator->next_step(e_.facts) : e_.setup.integrator.max_step;
     target = e_.time + dt >= limit ? limit : e_.time + dt;
     // Syncs still due before the new target are taken in the next round: no window may end
     // unlooked-at while the members step past it.
@@ -230,8 +227,8 @@ void LocalStepper::step(double limit) {
     if (e_.stats.steps % kReleaseEvery == 0) release_members();
   }
   if (members_changed_) {
-    e_.lists.stale = true;
     index_members();
+    e_.extend_lists();  // the joiners' rows (a departure made the lists stale)
     fresh_step();
     members_changed_ = false;
   } else if (e_.carried) {
@@ -239,23 +236,6 @@ void LocalStepper::step(double limit) {
   }
   e_.stats.members = e_.state.size();
   count_lanes();
-}
-
-// Carried steps, while the lists lack the grains that joined in this step's rounds: each at its
-// own radius, and its pairs with every member whose box meets its own (no other can reach it
-// within the step).
-double LocalStepper::joiners_step() const {
-  if (!e_.carried || !e_.lists.appended_only) return HUGE_VAL;
-  double rate = 0;
-  for (std::size_t k = e_.lists.built_count(); k < e_.state.size(); ++k) {
-    const std::uint32_t id = e_.state.origin[k];
-    rate = std::max(rate, e_.integrator->grain_rate(e_.state, k));
-    boxes_.overlapping(boxes_.box(id), id, [&](std::uint32_t j) {
-      if (is_member(kind_[j]))
-        rate = std::max(rate, e_.integrator->pair_rate(e_.state, k, member_[j]));
-    });
-  }
-  return rate > 0 ? 1.0 / rate : HUGE_VAL;
 }
 
 // At a step's end: the lists are then always fresh, so a checkpoint (which keeps whether they

@@ -154,7 +154,6 @@ class LocalStepper {
   // Carried steps: lists rebuilt if stale, then the members' step chosen again (the step reads
   // the lists' pairs and margins).
   void fresh_step();
-  double joiners_step() const;
   // The coarse bed (local_retirement.cpp).
   void retire(std::uint32_t id, double t, const FreeFlight::Point& p);
   void retire_members();
