@@ -74,7 +74,7 @@ TEST(CandidateLists, AppendedParticlesHoldEachClosePairOnce) {
   for (int i = 0; i < 1500; ++i) c.append(i % 7 == 0);
   c.lists.rebuild_at_build_positions(c.state, c.grid, true);
   for (int i = 0; i < 300; ++i) c.append(i % 5 == 0);
-  c.lists.extend(c.state);
+  c.lists.extend(c.state, c.grid);
   ASSERT_EQ(c.lists.rows(), c.state.size());
   EXPECT_EQ(c.lists.grid_rows, 1500u);
 
@@ -105,10 +105,10 @@ TEST(CandidateLists, RowsAppendedInBatchesAreThoseAppendedAtOnce) {
   at_once.lists.rebuild_at_build_positions(at_once.state, at_once.grid, true);
   for (int batch = 0; batch < 5; ++batch) {
     for (int i = 0; i < 20; ++i) batches.append(i % 3 == 0);
-    batches.lists.extend(batches.state);
+    batches.lists.extend(batches.state, batches.grid);
   }
   for (int i = 0; i < 100; ++i) at_once.append(i % 20 % 3 == 0);
-  at_once.lists.extend(at_once.state);
+  at_once.lists.extend(at_once.state, at_once.grid);
   EXPECT_EQ(batches.lists.list_start(), at_once.lists.list_start());
   EXPECT_EQ(batches.lists.list(), at_once.lists.list());
 
@@ -130,7 +130,7 @@ TEST(CandidateLists, StaleListsAreNotExtended) {
   c.lists.rebuild_at_build_positions(c.state, c.grid, true);
   c.lists.stale = true;
   c.append(false);
-  c.lists.extend(c.state);
+  c.lists.extend(c.state, c.grid);
   EXPECT_EQ(c.lists.rows(), 100u);
 }
 

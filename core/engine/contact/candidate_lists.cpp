@@ -27,10 +27,10 @@ void CandidateLists::rebuild_at_build_positions(const EngineState& s, NeighbourG
   build(grid, n, x0.data(), y0.data(), search.data(), frozen_aware ? s.frozen.data() : nullptr);
   grid_rows = n;
   stale = false;
-  extend(s);
+  extend(s, grid);
 }
 
-void CandidateLists::extend(const EngineState& s) {
+void CandidateLists::extend(const EngineState& s, const NeighbourGrid& grid) {
   if (stale) return;  // the next build takes them
   if (list_start_.empty()) list_start_.push_back(0);
   const std::size_t n = s.size();
@@ -38,10 +38,14 @@ void CandidateLists::extend(const EngineState& s) {
   const double* by = y0.data();
   const double* radius = search.data();
   for (std::size_t k = rows(); k < n; ++k) {
-    for (std::size_t m = 0; m < k; ++m) {
+    auto take = [&](std::size_t m) {
       const double dx = bx[m] - bx[k], dy = by[m] - by[k], reach = radius[k] + radius[m];
       if (dx * dx + dy * dy < reach * reach) list_.push_back(std::uint32_t(m));
-    }
+    };
+    // The grid holds the particles of its rows, at their build positions; those appended
+    // since are looked at one by one (a few, between two builds).
+    grid.for_each_near(bx[k], by[k], radius[k], bx, by, take);
+    for (std::size_t m = grid_rows; m < k; ++m) take(m);
     list_start_.push_back(std::uint32_t(list_.size()));
   }
 }

@@ -30,10 +30,11 @@ class CandidateLists {
   // Rows for the particles appended to the state since the last build or extension, without
   // touching the others (a grain joining the local stepper's members re-indexes nobody, and
   // a full build costs a thousand times its share): row k lists every particle m < k within
-  // search[k] + search[m] of the build positions, its own x0, y0 those it had when appended.
+  // search[k] + search[m] of the build positions, its own x0, y0 those it had when appended
+  // (found in `grid`, the one the lists were built with, and among the other appended ones).
   // So a pair with an appended particle is held once, in the later one's row. Not for the
   // force pass (it reads the grid's rows only; the global stepper never appends).
-  void extend(const EngineState& s);
+  void extend(const EngineState& s, const NeighbourGrid& grid);
   // Valid while no particle has moved more than half the margin the radii carry beyond the
   // interaction range: see the comment at its definition.
   bool moved_beyond_margin(const EngineState& s);

@@ -9,6 +9,7 @@
 // cells are hashed to buckets (key mod 2^k, so a row of cells stays contiguous) and the
 // particles counting-sorted by bucket every step. Memory: ~3 ints per particle.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -32,6 +33,14 @@ class NeighbourGrid {
   void for_each_candidate(std::size_t i, const double* x, const double* y, const double* radius,
                           Visit&& visit, bool coarser_only = false) const;
 
+  // Calls visit(j) for every particle j of every level whose cell lies within
+  // reach + the level's largest radius of (x, y), and possibly for some farther ones (the caller
+  // tests the distance): what a particle not in the grid, of search radius `reach`, may meet.
+  // px, py: the positions the grid was built at.
+  template <class Visit>
+  void for_each_near(double x, double y, double reach, const double* px, const double* py,
+                     Visit&& visit) const;
+
   std::uint8_t level(std::size_t i) const { return level_[i]; }
   // Particles in bucket order: iterating in this order keeps neighbours cache-local.
   const std::vector<std::uint32_t>& order() const { return sorted_; }
@@ -44,6 +53,10 @@ class NeighbourGrid {
   }
   std::int64_t column(int level, double x) const;
   std::int64_t row(int level, double y) const;
+  // visit(j) for the particles j != skip of level l in the cells within r of (x, y).
+  template <class Visit>
+  void for_each_in_block(int l, double x, double y, double r, std::size_t skip, const double* px,
+                         const double* py, Visit&& visit) const;
 
   int levels_ = 1, threads_ = 1;
   double cell0_ = 1, half_width_ = 0, height_ = 0;
@@ -73,35 +86,50 @@ void NeighbourGrid::for_each_candidate(std::size_t i, const double* x, const dou
                                        const double* radius, Visit&& visit,
                                        bool coarser_only) const {
   const int own = level_[i];
-  const double xi = x[i], yi = y[i];
   for (int l = coarser_only ? own + 1 : own; l < levels_; ++l) {
     const double reach = level_max_radius_[l];
     if (reach < 0) continue;  // empty level
-    const double r = reach + radius[i];
-    const std::int64_t c0 = column(l, xi - r), c1 = column(l, xi + r);
-    const std::int64_t r0 = row(l, yi - r), r1 = row(l, yi + r);
-    // The cells of one row are consecutive buckets. When no two cells of the (at most 3 x 3)
-    // block can share a bucket, a row is one range of the sorted particles, and a particle
-    // met there is visited once: only its level need be checked (buckets are shared by
-    // distant cells; the caller's distance test drops those).
-    const bool distinct = std::uint64_t(2 * columns_[l] + 3) <= mask_;
-    for (std::int64_t cy = r0; cy <= r1; ++cy) {
-      const std::uint64_t b0 = key(l, c0, cy) & mask_, b1 = key(l, c1, cy) & mask_;
-      if (distinct && b0 <= b1) {
-        for (std::uint32_t k = start_[b0], e = start_[b1 + 1]; k < e; ++k) {
-          const std::uint32_t j = sorted_[k];
-          if (level_[j] == l && j != i) visit(j);
-        }
-        continue;
+    for_each_in_block(l, x[i], y[i], reach + radius[i], i, x, y, visit);
+  }
+}
+
+template <class Visit>
+void NeighbourGrid::for_each_near(double x, double y, double reach, const double* px,
+                                  const double* py, Visit&& visit) const {
+  for (int l = 0; l < levels_; ++l)
+    if (level_max_radius_[l] >= 0)
+      for_each_in_block(l, x, y, reach + level_max_radius_[l], SIZE_MAX, px, py, visit);
+}
+
+template <class Visit>
+void NeighbourGrid::for_each_in_block(int l, double x, double y, double r, std::size_t skip,
+                                      const double* px, const double* py, Visit&& visit) const {
+  const std::int64_t c0 = column(l, x - r), c1 = column(l, x + r);
+  const std::int64_t r0 = row(l, y - r), r1 = row(l, y + r);
+  // The cells of one row are consecutive buckets. When no two cells of the block can share a
+  // bucket, a row is one range of the sorted particles, and a particle met there is visited
+  // once: only its level need be checked (buckets are shared by distant cells; the caller's
+  // distance test drops those).
+  // (The block's cells span keys up to (r1 - r0) columns + (c1 - c0) apart; a neighbour
+  // search's block is at most 3 x 3.)
+  const std::uint64_t span = std::uint64_t((r1 - r0) * columns_[l] + (c1 - c0) + 1);
+  const bool distinct = std::max(std::uint64_t(2 * columns_[l] + 3), span) <= mask_;
+  for (std::int64_t cy = r0; cy <= r1; ++cy) {
+    const std::uint64_t b0 = key(l, c0, cy) & mask_, b1 = key(l, c1, cy) & mask_;
+    if (distinct && b0 <= b1) {
+      for (std::uint32_t k = start_[b0], e = start_[b1 + 1]; k < e; ++k) {
+        const std::uint32_t j = sorted_[k];
+        if (level_[j] == l && j != skip) visit(j);
       }
-      for (std::int64_t cx = c0; cx <= c1; ++cx) {
-        const std::uint64_t b = key(l, cx, cy) & mask_;
-        for (std::uint32_t k = start_[b], e = start_[b + 1]; k < e; ++k) {
-          const std::uint32_t j = sorted_[k];
-          // Keep only the particles of this cell.
-          if (level_[j] != l || j == i || column(l, x[j]) != cx || row(l, y[j]) != cy) continue;
-          visit(j);
-        }
+      continue;
+    }
+    for (std::int64_t cx = c0; cx <= c1; ++cx) {
+      const std::uint64_t b = key(l, cx, cy) & mask_;
+      for (std::uint32_t k = start_[b], e = start_[b + 1]; k < e; ++k) {
+        const std::uint32_t j = sorted_[k];
+        // Keep only the particles of this cell (by the positions the grid was built at).
+        if (level_[j] != l || j == skip || column(l, px[j]) != cx || row(l, py[j]) != cy) continue;
+        visit(j);
       }
     }
   }

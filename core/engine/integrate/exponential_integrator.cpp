@@ -111,7 +111,12 @@ class ExponentialIntegrator final : public Integrator {
       step_ = choose_step(s);
   }
 
-  void refresh_step(const EngineState& s) override { step_ = choose_step(s); }
+  void refresh_step(const EngineState& s, std::size_t appended_from) override {
+    if (appended_from == 0 || appended_from > s.size())
+      step_ = choose_step(s);
+    else  // a min of the bounds, which min(step, the joiners' bound) gives to the bit
+      step_ = std::min(step_, choose_step(s, appended_from));
+  }
   const std::vector<double>* carrier_radii() const override {
     return carried_ ? &carrier_ : nullptr;
   }
@@ -155,14 +160,16 @@ class ExponentialIntegrator final : public Integrator {
   }
   // The fastest moving grain, in its radii per second. A free grain may reach its settling
   // speed within the next step; one in a contact constraint moves as the projection left it.
-  double fastest(const EngineState& s) {
+  double fastest(const EngineState& s, std::size_t from = 0) {
     if (!crossing_) return 0;
     constrained_.resize(s.size());
     const bool marked = !ctx_.members_only;
     if (marked)
       for (std::uint32_t p : projection_.participants()) constrained_[p] = 1;
+    const int threads = from == 0 ? ctx_.threads : 1;  // a few joiners: not worth a thread
     const ThreadSums sums =
-        integrate(ctx_.threads, s.size(), sums_, [&](std::size_t i, ThreadSums& t) {
+        integrate(threads, s.size() - from, sums_, [&](std::size_t k, ThreadSums& t) {
+          const std::size_t i = from + k;
           if (s.frozen[i]) return;
           const double d = s.diameter[i];
           const double v2 = s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i];
@@ -175,9 +182,10 @@ class ExponentialIntegrator final : public Integrator {
     return sums.max_radii_per_s;
   }
 
-  double choose_step(const EngineState& s) {
+  // The step for particles from..end (and, with carried steps, the pairs in their rows).
+  double choose_step(const EngineState& s, std::size_t from = 0) {
     const CandidateLists& lists = *ctx_.lists;
-    return carried_ && !lists.stale ? carried_step(s) : limited(fastest(s));
+    return carried_ && !lists.stale ? carried_step(s, from) : limited(fastest(s, from));
   }
 
   // Carried steps: the grains held together by the forces the last step left (the projection's
@@ -219,7 +227,7 @@ class ExponentialIntegrator final : public Integrator {
   // its box's allowance), and no listed pair closes by more than its gap plus
   // crossing_fraction (r_i + r_j). Speeds count at least the settling speed, as fastest() does;
   // a pair's closing speed counts both (each may reach it within the step). Needs fresh lists.
-  double carried_step(const EngineState& s) {
+  double carried_step(const EngineState& s, std::size_t from) {
     const CandidateLists& lists = *ctx_.lists;
     const std::vector<double>* allowance =
         ctx_.allowance && !ctx_.allowance->empty() ? ctx_.allowance : nullptr;
@@ -227,7 +235,7 @@ class ExponentialIntegrator final : public Integrator {
     const std::size_t n = s.size();
     double rate = 0;  // per second: the inverse of the longest step allowed
     closing_.resize(n);
-    for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t k = from; k < n; ++k) {
       closing_[k] =
           s.frozen[k] ? 0.0 : std::sqrt(s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k]) + floor_of(s, k);
       if (s.frozen[k]) continue;
@@ -245,8 +253,9 @@ class ExponentialIntegrator final : public Integrator {
     const std::vector<std::uint32_t>& list = lists.list();
     const std::size_t listed = std::min(n, lists.rows());
     // A pair closes at most at the sum of both speeds (floors included): most pairs are then
-    // far enough apart not to bind, which their squared distance tells without a root.
-    for (std::size_t k = 0; k < listed; ++k) {
+    // far enough apart not to bind, which their squared distance tells without a root. The
+    // pairs of particles appended from `from` on are in the rows from there (their own).
+    for (std::size_t k = from; k < listed; ++k) {
       const std::uint32_t i = lists.particle_of(k, *ctx_.grid);
       if (i >= n) continue;
       for (std::uint32_t q = start[k]; q < start[k + 1]; ++q) {

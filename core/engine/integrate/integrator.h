@@ -98,8 +98,11 @@ class Integrator {
     std::fill(touching.begin(), touching.end(), 0.0);
   }
   // The particles the state holds changed (local time stepping, where the step counts every
-  // moving particle at least at its settling speed): the next step is chosen again.
-  virtual void refresh_step(const EngineState&) {}
+  // moving particle at least at its settling speed): the next step is chosen again. With
+  // `appended_from` < s.size(), only particles appended from there on changed since the step
+  // was last chosen (and their candidate lists' rows): the step is bounded by them too, the same
+  // bits as chosen afresh.
+  virtual void refresh_step(const EngineState&, std::size_t /*appended_from*/ = 0) {}
   // Carried steps: by sample index, each grain's pace radius: the largest radius among the
   // grains it touches, directly or through others, at the end of the last step, times
   // carried_fraction / crossing_fraction, or its own radius if that is more (or it touches

@@ -160,7 +160,7 @@ void EngineParts::rebuild_lists() {
 void EngineParts::extend_lists() {
   if (lists.stale || lists.rows() >= state.size()) return;
   widen_search(lists.rows());
-  lists.extend(state);
+  lists.extend(state, grid);
 }
 
 void EngineParts::resort_and_rebuild_lists() {

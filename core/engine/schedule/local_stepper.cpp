@@ -98,6 +98,7 @@ void LocalStepper::step(double limit) {
   std::size_t idle_syncs = 0;
   double last_sync = e_.time;
   std::vector<Sync>& syncs = lanes_[0].syncs;
+  bool first_round = true;
   for (;;) {
     failed_.clear();
     if (apart) take_lanes(target);
@@ -146,12 +147,15 @@ void LocalStepper::step(double limit) {
       hold_coasting_box(a.id, a.after.merged(a.before));
       a.widened = true;
     }
+    const std::size_t before = e_.state.size();
     for (std::uint32_t id : failed_)
       if (kind_[id] == GrainKind::coasting) engage(id, coasting_at(id, e_.time), false);
     wake_around(kNoMember);
-    index_members();
     e_.extend_lists();  // the joiners come last, the others' rows stand
-    e_.integrator->refresh_step(e_.state);
+    // The first round chooses the step afresh (a grain may have frozen since it was chosen);
+    // the next ones only add the joiners' bounds.
+    e_.integrator->refresh_step(e_.state, first_round ? 0 : before);
+    first_round = false;
     members_changed_ = false;
     moving = count_moving();
     dt = moving ? e_.integrator->next_step(e_.facts) : e_.setup.integrator.max_step;
@@ -227,7 +231,6 @@ void LocalStepper::step(double limit) {
     if (e_.stats.steps % kReleaseEvery == 0) release_members();
   }
   if (members_changed_) {
-    index_members();
     e_.extend_lists();  // the joiners' rows (a departure made the lists stale)
     fresh_step();
     members_changed_ = false;
