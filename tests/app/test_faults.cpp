@@ -334,6 +334,13 @@ TEST(Faults, ADamagedCheckpointIsRefusedFieldByField) {
   write_text(dir / "checkpoint.bin", flipped);
   expect_refused(test::run_sedem("run --resume " + dir.string()), {"does not match"});
 
+  // Written by an older sedem (the magic's last byte is the format's version).
+  std::string older = good;
+  older[7] = '1';
+  forge_checkpoint(dir, older);
+  expect_refused(test::run_sedem("run --resume " + dir.string()),
+                 {"written by another version of sedem", "run it again from the start"});
+
   // The time (after the 8-byte magic and the count of particles the state holds): NaN,
   // negative, past the end.
   for (double t : {std::nan(""), -1.0, 1e9}) {
