@@ -228,7 +228,7 @@ void Engine::load_checkpoint(std::istream& in, const std::string& path) {
       if (!(e.state.diameter[i] > 0) || !(e.state.weight[i] >= 0) || e.state.frozen[i] > 1)
         bad("particle " + std::to_string(i) + " has a bad size, weight or frozen flag");
     if (e.resort.done_at < 0 || e.resort.done_at > e.stats.steps) bad("resort step out of range");
-    if (e.lists.grid_rows > n)
+    if (!e.lists.stale && e.lists.grid_rows > n)
       bad("the candidate lists' " + std::to_string(e.lists.grid_rows) + " rows exceed the " +
           std::to_string(n) + " particles the state holds");
     // The springs follow: no more of them than the file holds.

@@ -151,6 +151,16 @@ void EngineParts::widen_search(std::size_t from) {
                                                       lists.margin * (*carrier)[state.origin[k]]);
 }
 
+bool EngineParts::carriers_outgrew_lists() const {
+  const std::vector<double>* carrier = carried ? integrator->carrier_radii() : nullptr;
+  if (!carrier) return false;
+  for (std::size_t k = 0; k < state.size(); ++k)
+    if (0.5 * state.diameter[k] * lists.range + lists.margin * (*carrier)[state.origin[k]] >
+        lists.search[k])
+      return true;
+  return false;
+}
+
 void EngineParts::rebuild_lists() {
   widen_search(0);
   lists.rebuild(state, grid, local);

@@ -42,6 +42,8 @@ struct EngineParts {
   [[noreturn]] void throw_blowup(const Blowup& b, double at) const;
   // Carried steps: the search radii of particles from..end follow their carriers.
   void widen_search(std::size_t from);
+  // Carried steps: some member's carrier asks for a wider search than its lists' row holds.
+  bool carriers_outgrew_lists() const;
 
   EngineSetup setup;
   Sample sample;  // its particles are brought up to date on demand (Engine::particles)
