@@ -187,8 +187,10 @@ void LocalStepper::step(double limit) {
     e_.stats.max_overlap_ratio = std::max(e_.stats.max_overlap_ratio, e_.facts.max_overlap_ratio);
     if (blowup.found) e_.throw_blowup(blowup, target);
     e_.lists.stale = e_.lists.stale || e_.lists.moved_beyond_margin(e_.state);
-    for (std::size_t k = 0; k < e_.state.size(); ++k)
+    for (std::size_t k = 0; k < e_.state.size(); ++k) {
+      prefetch_track(k + kPrefetchAhead);
       if (!e_.state.frozen[k]) move_deposit(e_.state.origin[k], e_.state.x[k], e_.state.y[k]);
+    }
   } else if (!moving) {
     e_.stats.contacts = 0;  // no force pass this step: nothing was found touching
   }
@@ -214,12 +216,13 @@ void LocalStepper::step(double limit) {
     if (retire_height_ > 0) retire_members();
     // Members that used their allowance take a new box; whatever it reaches joins them.
     for (std::size_t k = 0; k < e_.state.size(); ++k) {
+      prefetch_track(k + kPrefetchAhead);
       if (e_.state.frozen[k]) continue;
       const std::uint32_t id = e_.state.origin[k];
-      const double moved =
-          std::hypot(e_.state.x[k] - track_[id].flight.x, e_.state.y[k] - track_[id].flight.y);
-      const double pace = e_.carried ? e_.allowance[id] : 0.5 * e_.state.diameter[k];
-      if (moved > kReanchor * pace) wake_.push_back(id);
+      const double dx = e_.state.x[k] - track_[id].flight.x;
+      const double dy = e_.state.y[k] - track_[id].flight.y;
+      const double pace = kReanchor * (e_.carried ? e_.allowance[id] : 0.5 * e_.state.diameter[k]);
+      if (dx * dx + dy * dy > pace * pace) wake_.push_back(id);
     }
     wake_around(kNoMember);
     if (e_.freeze.due(e_.stats.steps)) {

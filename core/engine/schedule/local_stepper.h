@@ -177,6 +177,16 @@ class LocalStepper {
     std::uint32_t deposit_cell = 0;  // the voidage cell holding its weight
   };
   std::vector<Track> track_;
+  // The passes over the members read their tracks by sample index, a cache miss each: the
+  // track of the member that many places ahead is asked for in advance.
+  static constexpr std::size_t kPrefetchAhead = 8;
+  void prefetch_track(std::size_t k) const {
+    if (k < e_.state.size()) {
+      const Track* t = &track_[e_.state.origin[k]];
+      __builtin_prefetch(t);
+      __builtin_prefetch(&t->deposit_cell);
+    }
+  }
   std::vector<std::uint32_t> member_;
   std::vector<Lane> lanes_;
   int lane_threads_ = 1;
