@@ -41,6 +41,7 @@ void LocalStepper::take_lane(std::size_t l, double target) {
     const auto [t, id] = lane.syncs.front();
     std::pop_heap(lane.syncs.begin(), lane.syncs.end(), kLater);
     lane.syncs.pop_back();
+    prefetch_next(lane.syncs);
     if (kind_[id] != GrainKind::coasting || track_[id].t1 != t) continue;  // stale
     const FreeFlight::Point p = track_[id].flight.at(t - track_[id].t0);
     if (!std::isfinite(p.x + p.y + p.vx + p.vy)) {

@@ -114,6 +114,7 @@ void LocalStepper::step(double limit) {
       ++idle_syncs;
       std::pop_heap(syncs.begin(), syncs.end(), kLater);
       syncs.pop_back();
+      prefetch_next(syncs);
       if (kind_[id] != GrainKind::coasting || track_[id].t1 != t) continue;  // engaged since: stale
       const FreeFlight::Point p = track_[id].flight.at(t - track_[id].t0);
       if (!std::isfinite(p.x + p.y + p.vx + p.vy))

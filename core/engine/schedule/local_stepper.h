@@ -181,11 +181,17 @@ class LocalStepper {
   // track of the member that many places ahead is asked for in advance.
   static constexpr std::size_t kPrefetchAhead = 8;
   void prefetch_track(std::size_t k) const {
-    if (k < e_.state.size()) {
-      const Track* t = &track_[e_.state.origin[k]];
-      __builtin_prefetch(t);
-      __builtin_prefetch(&t->deposit_cell);
-    }
+    if (k < e_.state.size()) prefetch_grain(e_.state.origin[k]);
+  }
+  // Likewise a sync asks for the next one's grain while it is taken.
+  void prefetch_grain(std::uint32_t id) const {
+    const Track* t = &track_[id];
+    __builtin_prefetch(t);
+    __builtin_prefetch(&t->deposit_cell);
+    __builtin_prefetch(&kind_[id]);
+  }
+  void prefetch_next(const std::vector<Sync>& syncs) const {
+    if (!syncs.empty()) prefetch_grain(syncs.front().second);
   }
   std::vector<std::uint32_t> member_;
   std::vector<Lane> lanes_;
