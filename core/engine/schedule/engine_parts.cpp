@@ -144,20 +144,20 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
 
 // Carried steps: a member's margin covers what its carrier lets it travel between two
 // builds; it only grows while it is a member (a step chosen before the build stays safe).
+double EngineParts::carried_search(std::size_t k, const std::vector<double>& carrier) const {
+  return 0.5 * state.diameter[k] * lists.range + lists.margin * carrier[state.origin[k]];
+}
+
 void EngineParts::widen_search(std::size_t from) {
   if (const std::vector<double>* carrier = carried ? integrator->carrier_radii() : nullptr)
     for (std::size_t k = from; k < state.size(); ++k)
-      lists.search[k] = std::max(lists.search[k], 0.5 * state.diameter[k] * lists.range +
-                                                      lists.margin * (*carrier)[state.origin[k]]);
+      lists.search[k] = std::max(lists.search[k], carried_search(k, *carrier));
 }
 
 bool EngineParts::carriers_outgrew_lists() const {
-  const std::vector<double>* carrier = carried ? integrator->carrier_radii() : nullptr;
-  if (!carrier) return false;
-  for (std::size_t k = 0; k < state.size(); ++k)
-    if (0.5 * state.diameter[k] * lists.range + lists.margin * (*carrier)[state.origin[k]] >
-        lists.search[k])
-      return true;
+  if (const std::vector<double>* carrier = carried ? integrator->carrier_radii() : nullptr)
+    for (std::size_t k = 0; k < state.size(); ++k)
+      if (carried_search(k, *carrier) > lists.search[k]) return true;
   return false;
 }
 

@@ -44,6 +44,8 @@ struct EngineParts {
   void widen_search(std::size_t from);
   // Carried steps: some member's carrier asks for a wider search than its lists' row holds.
   bool carriers_outgrew_lists() const;
+  // Carried steps: the search radius member k's carrier asks for.
+  double carried_search(std::size_t k, const std::vector<double>& carrier) const;
 
   EngineSetup setup;
   Sample sample;  // its particles are brought up to date on demand (Engine::particles)
