@@ -69,6 +69,8 @@ class SpanTally {
     ++steps_;
     members_ += double(stats.members);
     contacts_ += double(stats.contacts);
+    pushed_ += double(stats.pushed);
+    unpushed_steps_ += stats.unpushed_step > 0 ? stats.last_step / stats.unpushed_step : 1.0;
     while (next_ < spans_.size() && time >= spans_[next_].until_s) close(spans_[next_++], true);
   }
 
@@ -89,13 +91,15 @@ class SpanTally {
     span.steps = steps_;
     span.members = steps_ > 0 ? members_ / double(steps_) : 0;
     span.contacts = steps_ > 0 ? contacts_ / double(steps_) : 0;
+    span.pushed = steps_ > 0 ? pushed_ / double(steps_) : 0;
+    span.unpushed_steps = unpushed_steps_;
   }
 
   std::chrono::steady_clock::time_point start_;
   std::vector<ScaleSpan> spans_;
   std::size_t next_ = 0;
   std::int64_t steps_ = 0;
-  double members_ = 0, contacts_ = 0;
+  double members_ = 0, contacts_ = 0, pushed_ = 0, unpushed_steps_ = 0;
 };
 
 // A span's wall time for the table: "-" where the run did not get that far.
@@ -232,7 +236,12 @@ void write_scale_csv(const std::vector<ScaleRow>& rows, const fs::path& file) {
     out << ",wall_to_" << name << "_s,steps_to_" << name << ",members_per_step_to_" << name
         << ",contacts_per_step_to_" << name;
   }
-  out << ",members_per_step,contacts_per_step\n";
+  out << ",members_per_step,contacts_per_step";
+  for (const double until : kScaleSpanEnds) {
+    const std::string name = format_count(until);
+    out << ",pushed_per_step_to_" << name << ",unpushed_steps_to_" << name;
+  }
+  out << ",pushed_per_step,unpushed_steps\n";
   for (const auto& r : rows) {
     const double n = double(std::max<std::size_t>(r.particles, 1));
     out << field(r.label) << ',' << field(r.sample) << ',' << r.status << ','
@@ -253,9 +262,19 @@ void write_scale_csv(const std::vector<ScaleRow>& rows, const fs::path& file) {
         out << ",,,,";
     }
     if (r.spans.empty())
+      out << ",,";
+    else
+      out << ',' << r.spans.back().members << ',' << r.spans.back().contacts;
+    for (std::size_t k = 0; k < std::size(kScaleSpanEnds); ++k) {
+      if (k + 1 < r.spans.size() && r.spans[k].reached)
+        out << ',' << r.spans[k].pushed << ',' << r.spans[k].unpushed_steps;
+      else
+        out << ",,";
+    }
+    if (r.spans.empty())
       out << ",,\n";
     else
-      out << ',' << r.spans.back().members << ',' << r.spans.back().contacts << '\n';
+      out << ',' << r.spans.back().pushed << ',' << r.spans.back().unpushed_steps << '\n';
   }
   if (!out.flush()) throw std::runtime_error("cannot write " + file.string());
 }

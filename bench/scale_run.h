@@ -34,6 +34,10 @@ struct ScaleSpan {
   // Means over those steps of the grains on the common step (frozen ones included) and of the
   // particles touching something, as the engine's stats give them after each step.
   double members = 0, contacts = 0;
+  // What set the step (local steps): the mean of the members a coarser grain pushed, and the
+  // steps the others alone would have needed (each step counted as its share of the longer step
+  // they allowed; the steps themselves where that is not known).
+  double pushed = 0, unpushed_steps = 0;
 };
 
 // The spans the benchmark reports: to 60 s, to 600 s and to the end.

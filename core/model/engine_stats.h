@@ -18,6 +18,11 @@ struct EngineStats {
   std::int64_t windows = 0, engaged = 0, released = 0;
   std::size_t members = 0;  // grains on the common step at the last step (frozen included)
   std::size_t retired = 0;  // grains that fell below every instrument onto the coarse bed
+  // What set the last step (local steps; docs/engine.md): the members a coarser grain pushed
+  // faster than 3 times their settling speed, and the step the others alone would have allowed
+  // (s; 0 where not known).
+  std::size_t pushed = 0;
+  double unpushed_step = 0;
 };
 
 }  // namespace sedem

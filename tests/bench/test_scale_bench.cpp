@@ -127,6 +127,10 @@ TEST(ScaleBench, ReportsTheFirstMinuteApart) {
   EXPECT_GT(spans[0].members, 0);
   EXPECT_LE(spans[0].members, 300);
   EXPECT_LE(spans[0].contacts, spans[0].members);
+  // The steps the members not pushed would need: no more than were taken, and some.
+  EXPECT_GT(spans[0].unpushed_steps, 0);
+  EXPECT_LE(spans[0].unpushed_steps, double(spans[0].steps) * (1 + 1e-12));
+  EXPECT_LE(spans[0].pushed, spans[0].members);
   std::ifstream csv(out / "bench_scale.csv");
   std::string header, line;
   ASSERT_TRUE(std::getline(csv, header));
@@ -138,6 +142,11 @@ TEST(ScaleBench, ReportsTheFirstMinuteApart) {
   EXPECT_NEAR(std::stod(row.at("wall_to_60_s")), spans[0].wall_s, 1e-9 * spans[0].wall_s);
   EXPECT_EQ(std::stoll(row.at("steps_to_60")), spans[0].steps);
   EXPECT_EQ(row.at("wall_to_600_s"), "");
+  EXPECT_NEAR(std::stod(row.at("unpushed_steps_to_60")), spans[0].unpushed_steps,
+              1e-9 * spans[0].unpushed_steps);
+  EXPECT_NEAR(std::stod(row.at("unpushed_steps")), spans[2].unpushed_steps,
+              1e-9 * spans[2].unpushed_steps);
+  EXPECT_EQ(row.at("pushed_per_step_to_600"), "");
 }
 
 // Watching every step changes nothing: the same steps, the same readings, the same particles

@@ -112,11 +112,16 @@ class ExponentialIntegrator final : public Integrator {
   }
 
   void refresh_step(const EngineState& s, std::size_t appended_from) override {
-    if (appended_from == 0 || appended_from > s.size())
+    if (appended_from == 0 || appended_from > s.size()) {
       step_ = choose_step(s);
-    else  // a min of the bounds, which min(step, the joiners' bound) gives to the bit
+    } else {  // a min of the bounds, which min(step, the joiners' bound) gives to the bit
+      const StepLimit before = limit_;
       step_ = std::min(step_, choose_step(s, appended_from));
+      limit_.pushed += before.pushed;
+      limit_.unpushed_step = std::min(limit_.unpushed_step, before.unpushed_step);
+    }
   }
+  StepLimit step_limit() const override { return limit_; }
   const std::vector<double>* carrier_radii() const override {
     return carried_ ? &carrier_ : nullptr;
   }
@@ -137,6 +142,7 @@ class ExponentialIntegrator final : public Integrator {
   void load(std::istream& in) override {
     in.read(reinterpret_cast<char*>(&step_), 8);
     projection_.load(in);
+    limit_ = {};  // a report only: not kept, not known until the step is next chosen
     if (carried_) find_carriers();
   }
   std::size_t bytes() const override {
@@ -161,7 +167,10 @@ class ExponentialIntegrator final : public Integrator {
   // The fastest moving grain, in its radii per second. A free grain may reach its settling
   // speed within the next step; one in a contact constraint moves as the projection left it.
   double fastest(const EngineState& s, std::size_t from = 0) {
-    if (!crossing_) return 0;
+    if (!crossing_) {
+      limit_ = {};
+      return 0;
+    }
     constrained_.resize(s.size());
     const bool marked = !ctx_.members_only;
     if (marked)
@@ -176,16 +185,27 @@ class ExponentialIntegrator final : public Integrator {
           const double settling = constrained_[i] ? 0.0 : settling_ * d * d;
           const double speed = std::sqrt(std::max(v2, settling * settling));
           t.max_radii_per_s = std::max(t.max_radii_per_s, 2 * speed / d);
+          const double own = settling_ * d * d * StepLimit::kPushedSpeedRatio;
+          if (v2 > own * own)
+            ++t.pushed;
+          else
+            t.max_unpushed_radii_per_s = std::max(t.max_unpushed_radii_per_s, 2 * speed / d);
         });
     if (marked)
       for (std::uint32_t p : projection_.participants()) constrained_[p] = 0;
+    limit_ = {sums.pushed, limited(sums.max_unpushed_radii_per_s)};
     return sums.max_radii_per_s;
   }
 
   // The step for particles from..end (and, with carried steps, the pairs in their rows).
   double choose_step(const EngineState& s, std::size_t from = 0) {
     const CandidateLists& lists = *ctx_.lists;
-    return carried_ && !lists.stale ? carried_step(s, from) : limited(fastest(s, from));
+    if (carried_ && !lists.stale) {
+      const double step = carried_step(s, from);
+      limit_ = {0, 0};
+      return step;
+    }
+    return limited(fastest(s, from));
   }
 
   // Carried steps: the grains held together by the forces the last step left (the projection's
@@ -302,6 +322,7 @@ class ExponentialIntegrator final : public Integrator {
   std::vector<std::uint8_t> constrained_;  // per particle, zero between steps
   ProjectionFacts facts_;
   double step_ = 0, ceiling_ = 0;
+  StepLimit limit_;      // of step_
   double settling_ = 0;  // clear-water settling speed / d^2
   bool crossing_ = false;
 };

@@ -22,6 +22,9 @@ struct ThreadSums {
   double max_rate = 0;    // c/m, free particles
   double max_speed = 0;
   double max_radii_per_s = 0;  // speed / radius, moving particles
+  // The same over the particles not pushed (see StepLimit), and how many are.
+  double max_unpushed_radii_per_s = 0;
+  std::size_t pushed = 0;
   Blowup blowup;
 };
 
@@ -68,6 +71,9 @@ ThreadSums integrate(int threads, std::size_t n, std::vector<ThreadSums>& sums, 
     total.max_rate = std::max(total.max_rate, t.max_rate);
     total.max_speed = std::max(total.max_speed, t.max_speed);
     total.max_radii_per_s = std::max(total.max_radii_per_s, t.max_radii_per_s);
+    total.max_unpushed_radii_per_s =
+        std::max(total.max_unpushed_radii_per_s, t.max_unpushed_radii_per_s);
+    total.pushed += t.pushed;
     if (t.blowup.found && !total.blowup.found) total.blowup = t.blowup;
   }
   return total;

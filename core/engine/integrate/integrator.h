@@ -80,6 +80,16 @@ struct IntegratorContext {
   const std::vector<double>* allowance = nullptr;
 };
 
+// What set the step with local steps (the bench reports it, docs/engine.md): the members
+// moving faster than kPushedSpeedRatio times their settling speed, which only a push from a
+// coarser grain gives them, and the step the other members alone would allow. Their ratio to
+// the step taken is what stepping the pushed grains apart could save.
+struct StepLimit {
+  static constexpr double kPushedSpeedRatio = 3;
+  std::size_t pushed = 0;
+  double unpushed_step = 0;  // s; 0: not known (the global scheme, carried steps)
+};
+
 class Integrator {
  public:
   virtual ~Integrator() = default;
@@ -108,6 +118,8 @@ class Integrator {
   // carried_fraction / crossing_fraction, or its own radius if that is more (or it touches
   // none); a step lets it travel crossing_fraction of that. nullptr without carried steps.
   virtual const std::vector<double>* carrier_radii() const { return nullptr; }
+  // For the step next_step gives; see StepLimit.
+  virtual StepLimit step_limit() const { return {}; }
 };
 
 std::unique_ptr<Integrator> make_integrator(const IntegratorConfig& config,

@@ -175,6 +175,14 @@ void LocalStepper::step(double limit) {
         widened_.push_back(a);
     }
 
+  const StepLimit chosen = moving ? e_.integrator->step_limit() : StepLimit{};
+  e_.stats.pushed = chosen.pushed;
+  // Cut where the step was (the run's end, a reading), or not known: the step itself.
+  const double taken = target - e_.time;
+  e_.stats.unpushed_step = chosen.unpushed_step <= 0 ? 0
+                           : chosen.unpushed_step <= dt
+                               ? taken
+                               : std::max(taken, std::min(chosen.unpushed_step, limit - e_.time));
   if (moving && target > e_.time) {
     if (e_.lists.stale) {
       e_.resort_and_rebuild_lists();

@@ -1,0 +1,74 @@
+// What sets the members' step (StepLimit, reported by the scale benchmark): a fine grain that a
+// coarse one pushes moves at the coarse one's speed and, at 0.8 of its own radius a step, sets
+// the step for every member; the step the others alone would allow is the coarse grain's own.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/physics/stokes.h"
+#include "core/run/stage_setups.h"
+#include "engine_test_support.h"
+
+namespace sedem {
+namespace {
+
+Scene local_scene() {
+  Scene scene = test::scene_with("stokes", "exponential");
+  scene.integrator.local_steps = true;
+  return scene;
+}
+
+// A coarse grain falling onto a fine one: while it pushes, the fine grain is counted pushed and
+// the step the coarse grain alone would allow is about their radii's ratio (15) times the step
+// taken; before they meet nothing is pushed and that step is the step itself.
+TEST(StepLimit, AFineGrainPushedByACoarseOneIsWhatSetsTheStep) {
+  const double coarse = 60e-6, fine = 4e-6;
+  const double u = stokes::terminal_velocity(coarse, 2500, Fluid{});
+  Engine engine(engine_setup(local_scene()), test::sample_of({{0, 0.2, coarse}, {0, 0.19, fine}}));
+  int pushed_steps = 0, free_steps = 0;
+  double least_ratio = HUGE_VAL, most_ratio = 0;
+  const double end = 0.02 / u;  // 2 cm of the coarse grain's fall
+  while (engine.time() < end) {
+    engine.step(end);
+    const EngineStats& s = engine.stats();
+    if (s.members < 2 || s.last_step <= 0) continue;  // the pair not yet stepping together
+    ASSERT_GE(s.unpushed_step, s.last_step);
+    if (s.pushed == 0) {
+      ++free_steps;
+      if (engine.time() < end) {
+        EXPECT_EQ(s.unpushed_step, s.last_step);
+      }
+      continue;
+    }
+    ASSERT_EQ(s.pushed, 1u);
+    if (engine.time() > 0.9 * end) break;  // the last steps: the run's end limits them too
+    ++pushed_steps;
+    least_ratio = std::min(least_ratio, s.unpushed_step / s.last_step);
+    most_ratio = std::max(most_ratio, s.unpushed_step / s.last_step);
+  }
+  EXPECT_GT(pushed_steps, 100);
+  EXPECT_GT(least_ratio, 5) << most_ratio;
+  EXPECT_LT(most_ratio, 15 * 1.5) << least_ratio;
+  RecordProperty("free_steps", free_steps);
+}
+
+// Grains side by side that fall apart without touching share the step for a while, and nothing
+// is pushed: the step is what they all allow.
+TEST(StepLimit, GrainsFallingApartPushNothing) {
+  Engine engine(engine_setup(local_scene()),
+                test::sample_of({{0, 0.2, 60e-6}, {55e-6, 0.2, 40e-6}, {95e-6, 0.2, 30e-6}}));
+  int shared = 0;
+  for (int k = 0; k < 200; ++k) {
+    engine.step(1.0);
+    EXPECT_EQ(engine.stats().pushed, 0u);
+    if (engine.stats().unpushed_step == 0) continue;  // no member moving
+    ++shared;
+    EXPECT_EQ(engine.stats().unpushed_step, engine.stats().last_step);
+  }
+  EXPECT_GT(shared, 10);
+}
+
+}  // namespace
+}  // namespace sedem
