@@ -34,7 +34,9 @@ int main(int argc, char** argv) {
                  "3000,30000,100000 (and 1000000 with --full)")
       ->delimiter(',')
       ->check(CLI::PositiveNumber);
-  cli.add_option("--end-time-s", end_time_s, "Simulated time, s (default: the scene's, 86400)")
+  cli.add_option("--end-time-s", end_time_s,
+                 "Simulated time, s (default: the scene's, 86400); the run stops at the last "
+                 "reading before it")
       ->check(CLI::PositiveNumber);
   cli.add_option("--set", options.sets, "A scene key set in every run, key=value (repeatable)");
   cli.add_option("--threads", options.threads, "integrator.threads (default: the scene's)")

@@ -135,6 +135,8 @@ void print_row(std::FILE* table, const ScaleRow& r) {
         double(r.engine_peak_bytes) / double(std::max<std::size_t>(r.particles, 1)),
         double(r.rss_peak_bytes) / 1e6, r.error_hydrometer, r.error_buoyancy, r.error_pipette,
         whole.members, whole.contacts);
+    if (!r.message.empty())
+      std::fprintf(table, "%-10s %-10s note: %s\n", "", "", r.message.c_str());
   }
   std::fflush(table);
 }
@@ -205,6 +207,11 @@ std::vector<ScaleRow> run_scale_bench(const ScaleOptions& options, std::FILE* ta
         r.error_hydrometer = test_error(run.results, "hydrometer");
         r.error_buoyancy = test_error(run.results, "buoyancy");
         r.error_pipette = test_error(run.results, "pipette");
+        // With the outputs off nothing needs the engine after the last reading.
+        if (r.simulated_s < r.end_time_s)
+          r.message = "stopped at the last reading before the end time, t = " +
+                      format_count(r.simulated_s) + " s (" +
+                      (r.simulated_s > 0 ? "nothing later is read" : "no reading at all") + ")";
       } catch (const std::exception& e) {
         r.status = "failed";
         r.message = e.what();

@@ -73,6 +73,9 @@ TEST(ScaleBench, WritesOneSaneCsvRowPerRun) {
   EXPECT_NE(value("sets").find("instruments.pipette.times_min"), std::string::npos);
   EXPECT_EQ(number("particles"), 200);
   EXPECT_DOUBLE_EQ(number("simulated_s"), 18);  // the last reading
+  // ... and the row says why it stopped short of the 20 s asked for.
+  EXPECT_EQ(value("message"),
+            "stopped at the last reading before the end time, t = 18 s (nothing later is read)");
   const double wall = number("wall_s");
   EXPECT_GT(wall, 0);
   EXPECT_GT(number("steps"), 0);
