@@ -57,6 +57,13 @@ std::string format_count(double n) {
   return s;
 }
 
+// A time as short as it reads exactly enough (18, 0.5, 1440).
+std::string format_time(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", s);
+  return text;
+}
+
 // Watches every engine step of a run: wall time, steps, and the sums of members and contacts,
 // closing a span at the first step that reaches its time.
 class SpanTally {
@@ -209,9 +216,9 @@ std::vector<ScaleRow> run_scale_bench(const ScaleOptions& options, std::FILE* ta
         r.error_pipette = test_error(run.results, "pipette");
         // With the outputs off nothing needs the engine after the last reading.
         if (r.simulated_s < r.end_time_s)
-          r.message = "stopped at the last reading before the end time, t = " +
-                      format_count(r.simulated_s) + " s (" +
-                      (r.simulated_s > 0 ? "nothing later is read" : "no reading at all") + ")";
+          r.message =
+              "stopped at the last reading before the end time, t = " + format_time(r.simulated_s) +
+              " s (" + (r.simulated_s > 0 ? "nothing later is read" : "no reading at all") + ")";
       } catch (const std::exception& e) {
         r.status = "failed";
         r.message = e.what();
