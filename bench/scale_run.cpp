@@ -117,11 +117,21 @@ std::string span_wall(const ScaleRow& r, std::size_t k) {
   return s;
 }
 
+// The first minute's steps over those the members not pushed would have needed: what stepping
+// the pushed grains apart could save there ("-" where the run did not get that far).
+std::string first_minute_push_ratio(const ScaleRow& r) {
+  if (r.spans.empty() || !r.spans[0].reached || r.spans[0].unpushed_steps <= 0) return "-";
+  char s[32];
+  std::snprintf(s, sizeof s, "%.1f", double(r.spans[0].steps) / r.spans[0].unpushed_steps);
+  return s;
+}
+
 void print_header(std::FILE* table) {
-  std::fprintf(
-      table, "%-10s %-10s %9s %9s %8s %8s %10s %11s %9s %10s %8s %8s %8s %8s %10s %9s %9s\n",
-      "label", "sample", "particles", "wall_s", "to60_s", "to600_s", "steps", "p-steps/s", "sim_s",
-      "merit", "eng_B/p", "rss_MB", "hyd_pp", "sph_pp", "pip_pp", "members", "contacts");
+  std::fprintf(table,
+               "%-10s %-10s %9s %9s %8s %8s %10s %11s %9s %10s %8s %8s %8s %8s %10s %9s %9s %9s\n",
+               "label", "sample", "particles", "wall_s", "to60_s", "to600_s", "steps", "p-steps/s",
+               "sim_s", "merit", "eng_B/p", "rss_MB", "hyd_pp", "sph_pp", "pip_pp", "members",
+               "contacts", "push_x60");
   std::fflush(table);
 }
 
@@ -135,13 +145,13 @@ void print_row(std::FILE* table, const ScaleRow& r) {
     std::fprintf(
         table,
         "%-10s %-10s %9zu %9.1f %8s %8s %10lld %11.3g %9.0f %10.3g %8.0f %8.1f %8.3f %8.3f "
-        "%10.3f %9.1f %9.1f\n",
+        "%10.3f %9.1f %9.1f %9s\n",
         r.label.c_str(), r.sample.c_str(), r.particles, r.wall_s, span_wall(r, 0).c_str(),
         span_wall(r, 1).c_str(), static_cast<long long>(r.steps),
         r.particle_steps / std::max(r.wall_s, 1e-9), r.simulated_s, r.merit(),
         double(r.engine_peak_bytes) / double(std::max<std::size_t>(r.particles, 1)),
         double(r.rss_peak_bytes) / 1e6, r.error_hydrometer, r.error_buoyancy, r.error_pipette,
-        whole.members, whole.contacts);
+        whole.members, whole.contacts, first_minute_push_ratio(r).c_str());
     if (!r.message.empty())
       std::fprintf(table, "%-10s %-10s note: %s\n", "", "", r.message.c_str());
   }
