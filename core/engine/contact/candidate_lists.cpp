@@ -31,7 +31,7 @@ void CandidateLists::rebuild_at_build_positions(const EngineState& s, NeighbourG
 }
 
 void CandidateLists::extend(const EngineState& s, const NeighbourGrid& grid) {
-  if (stale) return;  // the next build takes them (a build has run, or the lists are stale)
+  if (stale) return;  // the next build takes them (lists not stale have been built)
   const std::size_t n = s.size();
   const double* bx = x0.data();
   const double* by = y0.data();

@@ -182,11 +182,12 @@ class ExponentialIntegrator final : public Integrator {
           if (s.frozen[i]) return;
           const double d = s.diameter[i];
           const double v2 = s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i];
-          const double settling = constrained_[i] ? 0.0 : settling_ * d * d;
+          const double free_settling = settling_ * d * d;
+          const double settling = constrained_[i] ? 0.0 : free_settling;
           const double speed = std::sqrt(std::max(v2, settling * settling));
           t.max_radii_per_s = std::max(t.max_radii_per_s, 2 * speed / d);
-          const double own = settling_ * d * d * StepLimit::kPushedSpeedRatio;
-          if (v2 > own * own)
+          const double pushed = free_settling * StepLimit::kPushedSpeedRatio;
+          if (v2 > pushed * pushed)
             ++t.pushed;
           else
             t.max_unpushed_radii_per_s = std::max(t.max_unpushed_radii_per_s, 2 * speed / d);
