@@ -35,6 +35,9 @@ struct IntegratorConfig {
   // local steps: a grain held against a coarser one may travel this fraction of the coarser
   // one's radius a step (0: its own radius limits it, crossing_fraction)
   double carried_fraction = 0;
+  // with carried steps: the grains carried further than their own radius allows take exact
+  // sub-steps of their own within the step
+  bool carried_substeps = false;
   double max_coast = 60.0;     // s, longest window of a coasting grain
   bool freeze_settled = true;  // freeze resting particles below every instrument
   bool retire_below = true;    // local steps: grains below every instrument land analytically

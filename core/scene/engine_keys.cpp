@@ -66,6 +66,12 @@ void describe(IntegratorConfig& c, Schema& s) {
            "could meet still closes by at most its gap plus crossing_fraction of its two radii, "
            "so none passes through another. 0: every grain is limited by its own radius, and a "
            "fine grain pushed by a coarse one sets the common step of every member.");
+  s.flag("integrator.carried_substeps", &c.carried_substeps,
+         "with carried_fraction > 0: the grains a step would carry further than crossing_fraction "
+         "of their own radius, and every member that could reach them within it, take sub-steps "
+         "of their own inside it, each within crossing_fraction of their own radius, the others "
+         "held still (no pair of the two can meet within the step). Contacts are then resolved "
+         "as with every grain at its own radius, at the carried steps' count of common steps.");
   s.flag("integrator.retire_below_instruments", &c.retire_below,
          "exponential with local_steps and at least one instrument: a grain that falls below "
          "the lowest instrument (less 1 cm) leaves the simulation and falls freely onto a coarse "

@@ -276,10 +276,14 @@ void check_scene(const Scene& scene, const SceneOrigins& origins) {
                         scene.integrator.retire_below && any_instrument(scene.instruments);
   if (!scene.forces.suspension_contacts && !retiring)
     check.fail("forces.suspension_contacts",
-               "= false needs grains to retire onto the coarse bed below the instruments "
+               "needs grains to retire onto the coarse bed below the instruments "
                "(integrator.method = exponential, integrator.local_steps = true, "
                "integrator.retire_below_instruments = true, an instrument enabled): grains "
                "that passed each other would reach a contact bed overlapping");
+  if (scene.integrator.carried_substeps && !(scene.integrator.carried_fraction > 0))
+    check.fail("integrator.carried_substeps",
+               "needs carried steps: set integrator.carried_fraction in (0, 1] (0.8 lets "
+               "the step be what the coarse grains alone allow)");
   check_instruments(scene, check);
   check_sampled_volumes(scene, origins, check);
   check_coasting(scene, check);

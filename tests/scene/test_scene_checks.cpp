@@ -171,9 +171,20 @@ TEST(SceneChecks, SuspensionContactsOffNeedsRetirement) {
           "false\n[instruments.pipette]\nenabled = false\n",
       {});
   EXPECT_NE(e.find("bad.toml:2: forces.suspension_contacts = false"), std::string::npos) << e;
-  EXPECT_NE(e.find("needs grains to retire onto the coarse bed"), std::string::npos) << e;
+  EXPECT_NE(e.find("= false needs grains to retire onto the coarse bed"), std::string::npos) << e;
   EXPECT_NE(test::scene_error(off, {"integrator.local_steps=false"}).find("local_steps"),
             std::string::npos);
+}
+
+// Carried sub-steps are taken within carried steps: without them the option would do nothing.
+TEST(SceneChecks, CarriedSubstepsNeedCarriedSteps) {
+  const std::string on = "[integrator]\ncarried_substeps = true\n";
+  const std::string e = test::scene_error(on, {});
+  EXPECT_NE(e.find("bad.toml:2: integrator.carried_substeps = true needs carried steps"),
+            std::string::npos)
+      << e;
+  EXPECT_NE(e.find("integrator.carried_fraction in (0, 1]"), std::string::npos) << e;
+  EXPECT_EQ(test::scene_error(on + "carried_fraction = 0.8\n", {}), "");
 }
 
 }  // namespace

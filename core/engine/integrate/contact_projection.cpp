@@ -44,7 +44,9 @@ std::size_t ContactProjection::bytes() const {
   for (const auto* v : {&mobility_, &response_, &moved_x_, &moved_y_}) b += v->capacity() * 8;
   for (const auto* v : {&spin_mobility_, &turned_}) b += v->capacity() * 8;
   b += held_.capacity() + kept_.capacity() * sizeof(PairHistory::Entry);
-  b += kept_tangential_.capacity() * sizeof(PairHistory::Entry);
+  for (const auto* v : {&kept_tangential_, &set_aside_, &set_aside_tangential_})
+    b += v->capacity() * sizeof(PairHistory::Entry);
+  b += moving_.capacity();
   return b + warm_.bytes() + warm_tangential_.bytes();
 }
 
@@ -82,6 +84,7 @@ void ContactProjection::load(std::istream& in) {
   load_history(in, warm_);
   if (friction_) load_history(in, warm_tangential_);
   kept_ = warm_.sorted_entries();
+  if (friction_) kept_tangential_ = warm_tangential_.sorted_entries();
   held_.clear();  // rebuilt from warm_ at the next run
   held_list_.clear();
   particle_.clear();
@@ -92,7 +95,8 @@ void ContactProjection::load(std::istream& in) {
 // cross-level pair from its finer side, which alone holds it in its list; in an appended row
 // every pair, held there alone).
 void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
-                                const CandidateLists& lists) {
+                                const CandidateLists& lists,
+                                const std::vector<std::uint32_t>* rows) {
   const std::size_t n = s.size();
   const double* x = s.x.data();
   const double* y = s.y.data();
@@ -106,7 +110,8 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
   const Walls walls{model_.half_width};
   const bool warm = warm_.size() > 0;
 
-  const int threads = threads_for(threads_, n);
+  const std::size_t scanned = rows ? rows->size() : n;
+  const int threads = threads_for(threads_, scanned);
   for (int t = threads; t < threads_; ++t) found_[std::size_t(t)].clear();
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
@@ -114,7 +119,8 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
     auto& found = found_[t];
     found.clear();
 #pragma omp for schedule(static)
-    for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t r = 0; r < scanned; ++r) {
+      const std::size_t k = rows ? (*rows)[r] : r;
       const std::uint32_t i = lists.particle_of(k, grid);
       const bool alone = k >= ordered;  // an appended row: its pairs are held nowhere else
       const double ri = 0.5 * d[i];
@@ -325,8 +331,27 @@ double ContactProjection::sweep(EngineState& s, Mode mode) {
   return worst;
 }
 
-void ContactProjection::keep(const EngineState& s) {
+void ContactProjection::keep(const EngineState& s, const std::uint8_t* aside) {
   const std::uint32_t* origin = s.origin.data();
+  // A pair with a grain set aside keeps its force unless a grain moving in this run is part of
+  // it (then this run collected it, from its warm force, and decides it anew).
+  set_aside_.clear();
+  set_aside_tangential_.clear();
+  if (aside) {
+    moving_.resize(std::max(grains_, s.size()), 0);
+    for (std::uint32_t p : particle_)
+      if (!s.frozen[p]) moving_[origin[p]] = 1;
+    auto kept_aside = [&](std::uint64_t key) {
+      const std::uint32_t a = std::uint32_t(key >> 32), b = std::uint32_t(key & 0xFFFFFFFFu);
+      const bool wall = is_wall(b);
+      return (aside[a] || (!wall && aside[b])) && !moving_[a] && (wall || !moving_[b]);
+    };
+    for (const PairHistory::Entry& e : kept_)
+      if (kept_aside(e.key)) set_aside_.push_back(e);
+    for (const PairHistory::Entry& e : kept_tangential_)
+      if (kept_aside(e.key)) set_aside_tangential_.push_back(e);
+    for (std::uint32_t p : particle_) moving_[origin[p]] = 0;
+  }
   for (std::uint32_t o : held_list_) held_[o] = 0;
   held_list_.clear();
   kept_.clear();
@@ -344,8 +369,21 @@ void ContactProjection::keep(const EngineState& s) {
     hold(oa);
     if (c.b < kSide) hold(ob);
   }
+  for (const PairHistory::Entry& e : set_aside_) {
+    kept_.push_back(e);
+    const std::uint32_t b = std::uint32_t(e.key & 0xFFFFFFFFu);
+    hold(std::uint32_t(e.key >> 32));
+    if (!is_wall(b)) hold(b);
+  }
+  kept_tangential_.insert(kept_tangential_.end(), set_aside_tangential_.begin(),
+                          set_aside_tangential_.end());
   warm_.assign(&kept_, 1);
   if (friction_) warm_tangential_.assign(&kept_tangential_, 1);
+}
+
+void ContactProjection::append_touching(std::vector<std::uint32_t>& out) const {
+  for (std::size_t k = 0; k < particle_.size(); ++k)
+    if (count_[k] > 0) out.push_back(particle_[k]);
 }
 
 void ContactProjection::mark_touching(std::vector<double>& touching) const {
@@ -356,7 +394,9 @@ void ContactProjection::mark_touching(std::vector<double>& touching) const {
 
 ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid,
                                        const CandidateLists& lists, const std::vector<double>& drag,
-                                       double dt, const double* start_x, const double* start_y) {
+                                       double dt, const double* start_x, const double* start_y,
+                                       const std::uint8_t* aside,
+                                       const std::vector<std::uint32_t>* rows) {
   const std::size_t n = std::max(grains_, s.size());
   if (held_.size() != n) {  // first run, or after a checkpoint was loaded
     held_.assign(n, 0);
@@ -371,7 +411,7 @@ ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid
     }
   }
   ProjectionFacts facts;
-  collect(s, grid, lists);
+  collect(s, grid, lists, rows);
   index_participants(s, drag, dt);
   if (friction_ && !(start_x && start_y))
     throw std::invalid_argument("contact projection: friction needs the step's start positions");
@@ -380,7 +420,7 @@ ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid
   sweep(s, Mode::start);
   for (std::uint32_t c : count_) facts.touching += c > 0;
   if (facts.touching == 0) {  // every particle stays at its free position
-    if (warm_.size() > 0) keep(s);
+    if (warm_.size() > 0) keep(s, aside);
   } else {
     bool warm = false;
     for (const Constraint& c : constraints_) warm = warm || c.lambda > 0;
@@ -391,7 +431,7 @@ ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid
     for (int k = 0; k < sweeps_; ++k)
       if (sweep(s, Mode::solve) < kTolerance) break;
     sweep(s, Mode::solve);
-    keep(s);
+    keep(s, aside);
     const double* d = s.diameter.data();
     for (std::size_t k = 0; k < particle_.size(); ++k) {
       const std::uint32_t p = particle_[k];

@@ -81,14 +81,22 @@ class ContactProjection {
   // mobility). Moves (x, y) from their free values and adds the matching velocity change.
   // With friction (friction()), (start_x, start_y) are the positions at the start of the step
   // (before the free update), for the tangential motion over it; required.
+  // `aside` (by sample index, or nullptr): grains this run leaves out, held frozen in `s` by the
+  // caller while others take a step of their own (carried sub-steps). The forces of their
+  // pairs that no moving grain of this run is part of stay as the last run left them. `rows`
+  // (ascending, or nullptr: all): the only rows of the lists that hold a pair with a grain
+  // this run moves.
   ProjectionFacts run(EngineState& s, const NeighbourGrid& grid, const CandidateLists& lists,
                       const std::vector<double>& drag, double dt, const double* start_x = nullptr,
-                      const double* start_y = nullptr);
+                      const double* start_y = nullptr, const std::uint8_t* aside = nullptr,
+                      const std::vector<std::uint32_t>* rows = nullptr);
   bool friction() const { return friction_; }
   // touching[i] > 0 for every particle in contact after the last run, 0 otherwise (size n).
   void mark_touching(std::vector<double>& touching) const;
   // The particles the last run's constraints involved (engine order): the only ones it moved.
   const std::vector<std::uint32_t>& participants() const { return particle_; }
+  // Appends the particles (engine order) in contact after the last run.
+  void append_touching(std::vector<std::uint32_t>& out) const;
   // The pairs (sample indices; a wall as partner kSide or kFloor) that held a force at the end
   // of the last run, or that a loaded checkpoint says did.
   const std::vector<PairHistory::Entry>& held_pairs() const { return kept_; }
@@ -119,7 +127,8 @@ class ContactProjection {
     warm,   // displacements of the current forces, unchanged
     solve,  // one Jacobi sweep: change the forces, their displacements
   };
-  void collect(const EngineState& s, const NeighbourGrid& grid, const CandidateLists& lists);
+  void collect(const EngineState& s, const NeighbourGrid& grid, const CandidateLists& lists,
+               const std::vector<std::uint32_t>* rows);
   void index_participants(const EngineState& s, const std::vector<double>& drag, double dt);
   // The tangential force's change of constraint c in a solving sweep (sets c.mt), friction on.
   double friction_change(Constraint& c, const EngineState& s, double dx, double dy, double dist,
@@ -127,7 +136,7 @@ class ContactProjection {
   // One sweep at the current positions; moves the participants. Returns the largest overlap
   // beyond its compliant target / smaller radius among the active constraints.
   double sweep(EngineState& s, Mode mode);
-  void keep(const EngineState& s);
+  void keep(const EngineState& s, const std::uint8_t* aside);
 
   ForceModel model_;
   int threads_ = 1, sweeps_ = 32;
@@ -152,6 +161,8 @@ class ContactProjection {
   PairHistory warm_;  // forces at the end of the last step; walls as partners kSide, kFloor
   PairHistory warm_tangential_;  // friction: the pairs' lambda_t at the end of the last step
   std::vector<PairHistory::Entry> kept_tangential_;
+  std::vector<PairHistory::Entry> set_aside_, set_aside_tangential_;  // keep's scratch
+  std::vector<std::uint8_t> moving_;  // keep's scratch, by sample index: moved in this run
 };
 
 }  // namespace sedem

@@ -30,6 +30,7 @@ class ExponentialIntegrator final : public Integrator {
     projection_.configure(*ctx_.model, ctx_.threads, ctx_.contact_sweeps, ctx_.grains);
     carried_ = ctx_.carried_steps && config_.carried_fraction > 0 && ctx_.sample_diameter &&
                ctx_.lists && crossing_;
+    substeps_ = carried_ && config_.carried_substeps;
     if (carried_) {
       const std::vector<double>& d = *ctx_.sample_diameter;
       carrier_.resize(d.size());
@@ -46,6 +47,79 @@ class ExponentialIntegrator final : public Integrator {
   double next_step(const PassFacts&) override { return step_; }
 
   void advance(EngineState& s, const ForceAccumulators& f, double dt, Blowup& blowup) override {
+    substep_work_ = 0;
+    split_ = substeps_ && dt > 0 && !ctx_.lists->stale && find_fast_set(s, dt);
+    if (split_)
+      advance_split(s, f, dt, blowup);
+    else
+      facts_ = move(s, f, dt, blowup, nullptr, nullptr);
+    // Carried steps: the local stepper chooses the next step once the members and the lists
+    // are up to date (refresh_step).
+    if (carried_)
+      find_carriers();
+    else
+      step_ = choose_step(s);
+  }
+
+  void refresh_step(const EngineState& s, std::size_t appended_from) override {
+    if (appended_from == 0 || appended_from > s.size()) {
+      step_ = choose_step(s);
+    } else {  // a min of the bounds, which min(step, the joiners' bound) gives to the bit
+      const StepLimit before = limit_;
+      step_ = std::min(step_, choose_step(s, appended_from));
+      limit_.pushed += before.pushed;
+      limit_.unpushed_step = std::min(limit_.unpushed_step, before.unpushed_step);
+    }
+  }
+  StepLimit step_limit() const override { return limit_; }
+  const std::vector<double>* carrier_radii() const override {
+    return carried_ ? &carrier_ : nullptr;
+  }
+
+  void contact_facts(PassFacts& facts) const override {
+    facts.contacts = facts_.touching;
+    facts.max_overlap_ratio = facts_.max_overlap_ratio;
+    facts.min_contact_mass = 0;
+  }
+  void mark_touching(std::vector<double>& touching) const override {
+    if (!split_) return projection_.mark_touching(touching);
+    std::fill(touching.begin(), touching.end(), 0.0);
+    for (std::uint32_t p : touched_) touching[p] = 1.0;
+  }
+  double substep_particle_steps() const override { return substep_work_; }
+
+  void save(std::ostream& out) const override {
+    out.write(reinterpret_cast<const char*>(&step_), 8);
+    projection_.save(out);
+  }
+  void load(std::istream& in) override {
+    in.read(reinterpret_cast<char*>(&step_), 8);
+    projection_.load(in);
+    limit_ = {};  // a report only: not kept, not known until the step is next chosen
+    if (carried_) find_carriers();
+  }
+  std::size_t bytes() const override {
+    return projection_.bytes() +
+           (drag_.capacity() + start_x_.capacity() + start_y_.capacity() + carrier_.capacity()) *
+               8 +
+           (parent_.capacity() + carried_ids_.capacity()) * 4 + touching_.capacity() +
+           largest_.capacity() * 8 + in_fast_.capacity() + aside_.capacity() +
+           (fast_.capacity() + others_.capacity() + touched_.capacity() + fast_rows_.capacity()) *
+               4;
+  }
+
+ private:
+  IntegratorConfig config_;
+  IntegratorContext ctx_;
+  std::vector<ThreadSums> sums_;
+  ContactProjection projection_;
+  std::vector<double> start_x_, start_y_;  // friction: the positions at the step's start
+  // The free update and the contact projection over dt: of every particle not frozen, or of
+  // those `only` lists (the others frozen by the caller, and by sample index `aside`, whose
+  // pairs' forces the projection keeps). Notes the first blow-up it sees.
+  ProjectionFacts move(EngineState& s, const ForceAccumulators& f, double dt, Blowup& blowup,
+                       const std::vector<std::uint32_t>* only, const std::uint8_t* aside,
+                       const std::vector<std::uint32_t>* rows = nullptr) {
     const ForceModel& m = *ctx_.model;
     const bool project = m.contact && !m.contact_forces && ctx_.grid && ctx_.lists;
     // Without the force pass a free particle feels only weight, buoyancy and drag.
@@ -59,8 +133,10 @@ class ExponentialIntegrator final : public Integrator {
     }
     // Free update: the forces of the pass (no contact force when contacts are projected), the
     // lubrication's stiffness folded into the damping.
+    const std::size_t count = only ? only->size() : s.size();
     const ThreadSums sums =
-        integrate(ctx_.threads, s.size(), sums_, [&](std::size_t i, ThreadSums& t) {
+        integrate(ctx_.threads, count, sums_, [&](std::size_t k, ThreadSums& t) {
+          const std::size_t i = only ? (*only)[k] : k;
           if (s.frozen[i]) return;
           const double d = s.diameter[i];
           const double mass = m.mass(d);
@@ -92,73 +168,129 @@ class ExponentialIntegrator final : public Integrator {
           check(s, i, ctx_.runaway_speed, t.blowup);
         });
     if (sums.blowup.found && !blowup.found) blowup = sums.blowup;
-    facts_ = ProjectionFacts{};
+    ProjectionFacts facts;
     if (project && dt > 0) {
-      facts_ = projection_.run(s, *ctx_.grid, *ctx_.lists, drag_, dt,
-                               friction ? start_x_.data() : nullptr,
-                               friction ? start_y_.data() : nullptr);
-      if (facts_.blowup.found && !blowup.found) blowup = facts_.blowup;
+      facts = projection_.run(s, *ctx_.grid, *ctx_.lists, drag_, dt,
+                              friction ? start_x_.data() : nullptr,
+                              friction ? start_y_.data() : nullptr, aside, rows);
+      if (facts.blowup.found && !blowup.found) blowup = facts.blowup;
       Blowup moved;
       for (std::uint32_t p : projection_.participants())
         if (!s.frozen[p]) check(s, p, ctx_.runaway_speed, moved);
       if (moved.found && !blowup.found) blowup = moved;
     }
-    // Carried steps: the local stepper chooses the next step once the members and the lists
-    // are up to date (refresh_step).
-    if (carried_)
-      find_carriers();
-    else
-      step_ = choose_step(s);
+    return facts;
   }
 
-  void refresh_step(const EngineState& s, std::size_t appended_from) override {
-    if (appended_from == 0 || appended_from > s.size()) {
-      step_ = choose_step(s);
-    } else {  // a min of the bounds, which min(step, the joiners' bound) gives to the bit
-      const StepLimit before = limit_;
-      step_ = std::min(step_, choose_step(s, appended_from));
-      limit_.pushed += before.pushed;
-      limit_.unpushed_step = std::min(limit_.unpushed_step, before.unpushed_step);
+  // Carried sub-steps: the members the step dt would carry further than crossing_fraction of
+  // their own radius (held against a coarser grain), and every member a listed pair could bring
+  // within the projection's skin of them over dt, at the set's fastest closing speed (grown
+  // until none is left): the fast set. No pair of the fast set and the others can then meet
+  // within dt, so each takes its steps apart, every grain within its own radius's rule.
+  bool find_fast_set(const EngineState& s, double dt) {
+    const double c = config_.crossing_fraction;
+    const std::size_t n = s.size();
+    in_fast_.assign(n, 0);
+    fast_.clear();
+    others_.clear();
+    closing_.resize(n);
+    double fastest = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      closing_[k] =
+          s.frozen[k] ? 0.0 : std::sqrt(s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k]) + floor_of(s, k);
+      if (s.frozen[k] || floored_speed(s, k) * dt <= c * 0.5 * s.diameter[k]) continue;
+      in_fast_[k] = 1;
+      fast_.push_back(std::uint32_t(k));
+      fastest = std::max(fastest, closing_[k]);
     }
-  }
-  StepLimit step_limit() const override { return limit_; }
-  const std::vector<double>* carrier_radii() const override {
-    return carried_ ? &carrier_ : nullptr;
+    if (fast_.empty()) return false;
+    const CandidateLists& lists = *ctx_.lists;
+    const std::vector<std::uint32_t>& start = lists.list_start();
+    const std::vector<std::uint32_t>& list = lists.list();
+    const std::size_t listed = std::min(n, lists.rows());
+    // The rows that hold a pair with a grain of the set, from the pass that added none: the
+    // only ones its sub-steps' projection reads.
+    for (bool grew = true; grew;) {
+      grew = false;
+      fast_rows_.clear();
+      for (std::size_t k = 0; k < listed; ++k) {
+        const std::uint32_t i = lists.particle_of(k, *ctx_.grid);
+        if (i >= n) continue;
+        bool fast_row = in_fast_[i];
+        for (std::uint32_t q = start[k]; q < start[k + 1]; ++q) {
+          const std::uint32_t j = list[q];
+          if (j >= n) continue;
+          fast_row = fast_row || in_fast_[j];
+          if (in_fast_[i] == in_fast_[j]) continue;
+          const std::uint32_t other = in_fast_[i] ? j : i;
+          if (s.frozen[other]) continue;  // a partner of both, never moved
+          const double ri = 0.5 * s.diameter[i], rj = 0.5 * s.diameter[j];
+          const double near =
+              (fastest + closing_[other]) * dt + ri + rj + kFastSkin * std::min(ri, rj);
+          const double dx = s.x[i] - s.x[j], dy = s.y[i] - s.y[j];
+          if (dx * dx + dy * dy >= near * near) continue;
+          in_fast_[other] = 1;
+          fast_.push_back(other);
+          fastest = std::max(fastest, closing_[other]);
+          grew = true;
+        }
+        if (fast_row) fast_rows_.push_back(std::uint32_t(k));
+      }
+    }
+    for (std::size_t k = 0; k < n; ++k)
+      if (!s.frozen[k] && !in_fast_[k]) others_.push_back(std::uint32_t(k));
+    return true;
   }
 
-  void contact_facts(PassFacts& facts) const override {
-    facts.contacts = facts_.touching;
-    facts.max_overlap_ratio = facts_.max_overlap_ratio;
-    facts.min_contact_mass = 0;
-  }
-  void mark_touching(std::vector<double>& touching) const override {
-    projection_.mark_touching(touching);
+  // The fast set over dt in sub-steps of its own radius's rule, the others held frozen; then the
+  // others over dt in one, the fast set held frozen.
+  void advance_split(EngineState& s, const ForceAccumulators& f, double dt, Blowup& blowup) {
+    aside_.resize(std::max(ctx_.grains, s.size()), 0);
+    auto set_aside = [&](const std::vector<std::uint32_t>& set, std::uint8_t on) {
+      for (std::uint32_t k : set) {
+        s.frozen[k] = on;
+        aside_[s.origin[k]] = on;
+      }
+    };
+    touched_.clear();
+    facts_ = ProjectionFacts{};
+    auto note = [&](const ProjectionFacts& facts) {  // its blow-ups are in `blowup` already
+      facts_.max_overlap_ratio = std::max(facts_.max_overlap_ratio, facts.max_overlap_ratio);
+    };
+    set_aside(others_, 1);
+    double left = dt;
+    std::size_t taken = 0;
+    while (left > 0 && !blowup.found) {
+      double radii_per_s = 0;
+      for (std::uint32_t k : fast_)
+        radii_per_s = std::max(radii_per_s, 2 * floored_speed(s, k) / s.diameter[k]);
+      // Equal parts of what is left, so that none is a sliver (a step of a few ns turns the
+      // projection's corrections into runaway speeds).
+      const double parts = std::ceil(left / limited(radii_per_s));
+      const double sub = parts <= 1 ? left : left / parts;
+      if (!(sub > 0)) {
+        blowup.note(s.origin[fast_.front()], "sub-step", sub);
+        break;
+      }
+      note(move(s, f, sub, blowup, &fast_, aside_.data(), &fast_rows_));
+      left = parts <= 1 ? 0 : left - sub;
+      ++taken;
+    }
+    substep_work_ = double(fast_.size()) * double(taken > 0 ? taken - 1 : 0);
+    projection_.append_touching(touched_);
+    set_aside(others_, 0);
+    if (!others_.empty()) {
+      set_aside(fast_, 1);
+      note(move(s, f, dt, blowup, &others_, aside_.data()));
+      projection_.append_touching(touched_);
+      set_aside(fast_, 0);
+    }
+    // A frozen grain touching grains of both sets is one particle in contact.
+    std::sort(touched_.begin(), touched_.end());
+    facts_.touching = std::size_t(std::unique(touched_.begin(), touched_.end()) - touched_.begin());
+    touched_.resize(facts_.touching);
   }
 
-  void save(std::ostream& out) const override {
-    out.write(reinterpret_cast<const char*>(&step_), 8);
-    projection_.save(out);
-  }
-  void load(std::istream& in) override {
-    in.read(reinterpret_cast<char*>(&step_), 8);
-    projection_.load(in);
-    limit_ = {};  // a report only: not kept, not known until the step is next chosen
-    if (carried_) find_carriers();
-  }
-  std::size_t bytes() const override {
-    return projection_.bytes() +
-           (drag_.capacity() + start_x_.capacity() + start_y_.capacity() + carrier_.capacity()) *
-               8 +
-           (parent_.capacity() + carried_ids_.capacity()) * 4 + touching_.capacity() +
-           largest_.capacity() * 8;
-  }
-
- private:
-  IntegratorConfig config_;
-  IntegratorContext ctx_;
-  std::vector<ThreadSums> sums_;
-  ContactProjection projection_;
-  std::vector<double> start_x_, start_y_;  // friction: the positions at the step's start
   // The ceiling, or less where a grain moving at `radii_per_s` would cross too far.
   double limited(double radii_per_s) const {
     if (!crossing_ || radii_per_s <= 0) return ceiling_;
@@ -314,6 +446,14 @@ class ExponentialIntegrator final : public Integrator {
   }
 
   bool carried_ = false;
+  // Carried sub-steps (integrator.carried_substeps): whether the last advance split, its fast
+  // set and the others (state indices), by sample index those set aside in a run, the
+  // particles in contact after it, and its particle-steps beyond one a member.
+  bool substeps_ = false, split_ = false;
+  static constexpr double kFastSkin = 0.5;  // the projection's skin, in smaller radii
+  std::vector<std::uint8_t> in_fast_, aside_;
+  std::vector<std::uint32_t> fast_, others_, touched_, fast_rows_;
+  double substep_work_ = 0;
   std::vector<double> carrier_;  // by sample index: see carrier_radii()
   std::vector<double> largest_;  // find_carriers' scratch: each set's largest radius, at its root
   std::vector<std::uint32_t> parent_, carried_ids_;  // union-find by sample index; its members

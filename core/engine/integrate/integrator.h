@@ -118,6 +118,9 @@ class Integrator {
   // carried_fraction / crossing_fraction, or its own radius if that is more (or it touches
   // none); a step lets it travel crossing_fraction of that. nullptr without carried steps.
   virtual const std::vector<double>* carrier_radii() const { return nullptr; }
+  // Carried sub-steps: the particle-steps the last advance took beyond one for each particle it
+  // moved.
+  virtual double substep_particle_steps() const { return 0; }
   // For the step next_step gives; see StepLimit.
   virtual StepLimit step_limit() const { return {}; }
 };

@@ -191,7 +191,7 @@ void LocalStepper::step(double limit) {
     Blowup blowup;
     e_.integrator->advance(e_.state, e_.forces, target - e_.time, blowup);
     e_.integrator->contact_facts(e_.facts);
-    e_.stats.particle_steps += double(moving);
+    e_.stats.particle_steps += double(moving) + e_.integrator->substep_particle_steps();
     e_.stats.contacts = e_.facts.contacts;
     e_.stats.max_overlap_ratio = std::max(e_.stats.max_overlap_ratio, e_.facts.max_overlap_ratio);
     if (blowup.found) e_.throw_blowup(blowup, target);
