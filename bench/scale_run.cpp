@@ -78,6 +78,9 @@ class SpanTally {
     contacts_ += double(stats.contacts);
     pushed_ += double(stats.pushed);
     unpushed_steps_ += stats.unpushed_step > 0 ? stats.last_step / stats.unpushed_step : 1.0;
+    fast_ += double(stats.fast_set);
+    substeps_ += double(stats.substeps);
+    split_steps_ += stats.substeps > 0;
     while (next_ < spans_.size() && time >= spans_[next_].until_s) close(spans_[next_++], true);
   }
 
@@ -100,6 +103,8 @@ class SpanTally {
     span.contacts = steps_ > 0 ? contacts_ / double(steps_) : 0;
     span.pushed = steps_ > 0 ? pushed_ / double(steps_) : 0;
     span.unpushed_steps = unpushed_steps_;
+    span.fast = steps_ > 0 ? fast_ / double(steps_) : 0;
+    span.substeps = split_steps_ > 0 ? substeps_ / double(split_steps_) : 0;
   }
 
   std::chrono::steady_clock::time_point start_;
@@ -107,6 +112,8 @@ class SpanTally {
   std::size_t next_ = 0;
   std::int64_t steps_ = 0;
   double members_ = 0, contacts_ = 0, pushed_ = 0, unpushed_steps_ = 0;
+  double fast_ = 0, substeps_ = 0;
+  std::int64_t split_steps_ = 0;
 };
 
 // A span's wall time for the table: "-" where the run did not get that far.
@@ -124,6 +131,29 @@ std::string first_minute_push_ratio(const ScaleRow& r) {
   char s[32];
   std::snprintf(s, sizeof s, "%.1f", double(r.spans[0].steps) / r.spans[0].unpushed_steps);
   return s;
+}
+
+// Two values of every span, to 60 s and 600 s and then to the end (the last without a suffix):
+// a group of columns written after the older ones, so that rows of older builds line up.
+void span_pair_header(std::ostream& out, const std::string& first, const std::string& second) {
+  for (const double until : kScaleSpanEnds) {
+    const std::string name = format_count(until);
+    out << ',' << first << "_to_" << name << ',' << second << "_to_" << name;
+  }
+  out << ',' << first << ',' << second;
+}
+void span_pair(std::ostream& out, const ScaleRow& r, double ScaleSpan::*first,
+               double ScaleSpan::*second) {
+  for (std::size_t k = 0; k < std::size(kScaleSpanEnds); ++k) {
+    if (k + 1 < r.spans.size() && r.spans[k].reached)
+      out << ',' << r.spans[k].*first << ',' << r.spans[k].*second;
+    else
+      out << ",,";  // a span the run did not reach, or a failed run
+  }
+  if (r.spans.empty())
+    out << ",,";
+  else
+    out << ',' << r.spans.back().*first << ',' << r.spans.back().*second;
 }
 
 void print_header(std::FILE* table) {
@@ -261,11 +291,9 @@ void write_scale_csv(const std::vector<ScaleRow>& rows, const fs::path& file) {
         << ",contacts_per_step_to_" << name;
   }
   out << ",members_per_step,contacts_per_step";
-  for (const double until : kScaleSpanEnds) {
-    const std::string name = format_count(until);
-    out << ",pushed_per_step_to_" << name << ",unpushed_steps_to_" << name;
-  }
-  out << ",pushed_per_step,unpushed_steps\n";
+  span_pair_header(out, "pushed_per_step", "unpushed_steps");
+  span_pair_header(out, "fast_per_step", "substeps_per_split_step");
+  out << '\n';
   for (const auto& r : rows) {
     const double n = double(std::max<std::size_t>(r.particles, 1));
     out << field(r.label) << ',' << field(r.sample) << ',' << r.status << ','
@@ -289,16 +317,9 @@ void write_scale_csv(const std::vector<ScaleRow>& rows, const fs::path& file) {
       out << ",,";
     else
       out << ',' << r.spans.back().members << ',' << r.spans.back().contacts;
-    for (std::size_t k = 0; k < std::size(kScaleSpanEnds); ++k) {
-      if (k + 1 < r.spans.size() && r.spans[k].reached)
-        out << ',' << r.spans[k].pushed << ',' << r.spans[k].unpushed_steps;
-      else
-        out << ",,";
-    }
-    if (r.spans.empty())
-      out << ",,\n";
-    else
-      out << ',' << r.spans.back().pushed << ',' << r.spans.back().unpushed_steps << '\n';
+    span_pair(out, r, &ScaleSpan::pushed, &ScaleSpan::unpushed_steps);
+    span_pair(out, r, &ScaleSpan::fast, &ScaleSpan::substeps);
+    out << '\n';
   }
   if (!out.flush()) throw std::runtime_error("cannot write " + file.string());
 }

@@ -38,6 +38,9 @@ struct ScaleSpan {
   // steps the others alone would have needed (each step counted as its share of the longer step
   // they allowed; the steps themselves where that is not known).
   double pushed = 0, unpushed_steps = 0;
+  // Carried sub-steps: the mean of the fast set's members over every step (0 where a step was
+  // not split), and of the sub-steps they took over the steps that were split.
+  double fast = 0, substeps = 0;
 };
 
 // The spans the benchmark reports: to 60 s, to 600 s and to the end.

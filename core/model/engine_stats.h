@@ -23,6 +23,9 @@ struct EngineStats {
   // (s; 0 where not known).
   std::size_t pushed = 0;
   double unpushed_step = 0;
+  // Carried sub-steps (integrator.carried_substeps): the members of the last step's fast set and
+  // the sub-steps they took (0 and 0: the step was not split).
+  std::size_t fast_set = 0, substeps = 0;
 };
 
 }  // namespace sedem

@@ -150,6 +150,12 @@ TEST(ScaleBench, ReportsTheFirstMinuteApart) {
   EXPECT_NEAR(std::stod(row.at("unpushed_steps")), spans[2].unpushed_steps,
               1e-9 * spans[2].unpushed_steps);
   EXPECT_EQ(row.at("pushed_per_step_to_600"), "");
+  // No carried sub-steps asked for: no fast set, no sub-steps (the columns' values with them:
+  // CarriedSubsteps.*, which read the same stats).
+  EXPECT_EQ(spans[2].fast, 0);
+  EXPECT_EQ(row.at("fast_per_step_to_60"), "0");
+  EXPECT_EQ(row.at("substeps_per_split_step"), "0");
+  EXPECT_EQ(row.at("fast_per_step_to_600"), "");
 }
 
 // Watching every step changes nothing: the same steps, the same readings, the same particles

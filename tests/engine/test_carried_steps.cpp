@@ -164,8 +164,11 @@ TEST(CarriedSubsteps, ACoarseGrainPushesAFineOneAsAtItsOwnRadius) {
     Engine engine(engine_setup(sub ? substep_scene() : carried_scene(false)),
                   test::sample_of({{0, 0.2, coarse}, {0, 0.19, fine}}));
     double worst = 0;
+    std::size_t fast = 0, substeps = 0;  // the most of any step
     for (int k = 1; k <= 200; ++k) {
       engine.advance_to(k * 0.02 / u / 100);
+      fast = std::max(fast, engine.stats().fast_set);
+      substeps = std::max(substeps, engine.stats().substeps);
       const auto& p = engine.particles();
       ASSERT_GT(p.y[0], p.y[1]) << sub << " " << k;
       const double gap = std::hypot(p.x[0] - p.x[1], p.y[0] - p.y[1]) - 0.5 * (coarse + fine);
@@ -176,6 +179,14 @@ TEST(CarriedSubsteps, ACoarseGrainPushesAFineOneAsAtItsOwnRadius) {
     steps[sub] = engine.stats().steps;
     fine_y[sub] = engine.particles().y[1];
     particle_steps[sub] = engine.stats().particle_steps;
+    // The pair is the fast set, and takes the coarse grain's step in many sub-steps.
+    if (sub) {
+      EXPECT_EQ(fast, 2u);
+      EXPECT_GT(substeps, 5u);
+      EXPECT_LE(substeps, 100u);
+    } else {
+      EXPECT_EQ(fast + substeps, 0u);
+    }
   }
   EXPECT_NEAR(fine_y[1], fine_y[0], 1e-3 * 0.02) << fine_y[0] << " " << fine_y[1];
   EXPECT_LT(steps[1] * 5, steps[0]) << steps[0] << " " << steps[1];

@@ -47,7 +47,6 @@ class ExponentialIntegrator final : public Integrator {
   double next_step(const PassFacts&) override { return step_; }
 
   void advance(EngineState& s, const ForceAccumulators& f, double dt, Blowup& blowup) override {
-    substep_work_ = 0;
     split_ = substeps_ && dt > 0 && !ctx_.lists->stale && find_fast_set(s, dt);
     if (split_)
       advance_split(s, f, dt, blowup);
@@ -86,7 +85,9 @@ class ExponentialIntegrator final : public Integrator {
     std::fill(touching.begin(), touching.end(), 0.0);
     for (std::uint32_t p : touched_) touching[p] = 1.0;
   }
-  double substep_particle_steps() const override { return substep_work_; }
+  SubstepReport substeps() const override {
+    return split_ ? SubstepReport{fast_.size(), taken_} : SubstepReport{};
+  }
 
   void save(std::ostream& out) const override {
     out.write(reinterpret_cast<const char*>(&step_), 8);
@@ -259,7 +260,7 @@ class ExponentialIntegrator final : public Integrator {
     };
     set_aside(others_, 1);
     double left = dt;
-    std::size_t taken = 0;
+    taken_ = 0;
     while (left > 0 && !blowup.found) {
       double radii_per_s = 0;
       for (std::uint32_t k : fast_)
@@ -274,9 +275,8 @@ class ExponentialIntegrator final : public Integrator {
       }
       note(move(s, f, sub, blowup, &fast_, aside_.data(), &fast_rows_));
       left = parts <= 1 ? 0 : left - sub;
-      ++taken;
+      ++taken_;
     }
-    substep_work_ = double(fast_.size()) * double(taken > 0 ? taken - 1 : 0);
     projection_.append_touching(touched_);
     set_aside(others_, 0);
     if (!others_.empty()) {
@@ -368,8 +368,10 @@ class ExponentialIntegrator final : public Integrator {
       largest_[r] = std::max(largest_[r], 0.5 * d[id]);
     }
     const double scale = config_.carried_fraction / config_.crossing_fraction;
+    any_carried_ = false;
     for (std::uint32_t id : carried_ids_) {
       carrier_[id] = std::max(0.5 * d[id], scale * largest_[root(id)]);
+      any_carried_ = any_carried_ || carrier_[id] > 0.5 * d[id];
       touching_[id] = 1;
     }
     for (std::uint32_t id : carried_ids_) largest_[id] = 0;
@@ -402,6 +404,9 @@ class ExponentialIntegrator final : public Integrator {
       }
       rate = std::max(rate, floored_speed(s, k) / (c * pace));
     }
+    // With every grain at its own radius's pace no pair can close by more than the pair rule
+    // allows: the grains' own bounds above are the one-rate scheme's.
+    if (!any_carried_) return rate > 0 ? std::min(ceiling_, 1.0 / rate) : ceiling_;
     const std::vector<std::uint32_t>& start = lists.list_start();
     const std::vector<std::uint32_t>& list = lists.list();
     const std::size_t listed = std::min(n, lists.rows());
@@ -446,14 +451,15 @@ class ExponentialIntegrator final : public Integrator {
   }
 
   bool carried_ = false;
+  bool any_carried_ = false;  // some grain's pace is more than its own radius
   // Carried sub-steps (integrator.carried_substeps): whether the last advance split, its fast
   // set and the others (state indices), by sample index those set aside in a run, the
-  // particles in contact after it, and its particle-steps beyond one a member.
+  // particles in contact after it, and the sub-steps it took.
   bool substeps_ = false, split_ = false;
   static constexpr double kFastSkin = 0.5;  // the projection's skin, in smaller radii
   std::vector<std::uint8_t> in_fast_, aside_;
   std::vector<std::uint32_t> fast_, others_, touched_, fast_rows_;
-  double substep_work_ = 0;
+  std::size_t taken_ = 0;
   std::vector<double> carrier_;  // by sample index: see carrier_radii()
   std::vector<double> largest_;  // find_carriers' scratch: each set's largest radius, at its root
   std::vector<std::uint32_t> parent_, carried_ids_;  // union-find by sample index; its members

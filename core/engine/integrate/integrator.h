@@ -90,6 +90,10 @@ struct StepLimit {
   double unpushed_step = 0;  // s; 0: not known (the global scheme, carried steps)
 };
 
+struct SubstepReport {
+  std::size_t fast = 0, taken = 0;
+};
+
 class Integrator {
  public:
   virtual ~Integrator() = default;
@@ -118,9 +122,9 @@ class Integrator {
   // carried_fraction / crossing_fraction, or its own radius if that is more (or it touches
   // none); a step lets it travel crossing_fraction of that. nullptr without carried steps.
   virtual const std::vector<double>* carrier_radii() const { return nullptr; }
-  // Carried sub-steps: the particle-steps the last advance took beyond one for each particle it
-  // moved.
-  virtual double substep_particle_steps() const { return 0; }
+  // Carried sub-steps: the fast set of the last advance and the sub-steps it took ({0, 0}: the
+  // step was not split).
+  virtual SubstepReport substeps() const { return {}; }
   // For the step next_step gives; see StepLimit.
   virtual StepLimit step_limit() const { return {}; }
 };

@@ -183,6 +183,7 @@ void LocalStepper::step(double limit) {
                            : chosen.unpushed_step <= dt
                                ? taken
                                : std::max(taken, std::min(chosen.unpushed_step, limit - e_.time));
+  e_.stats.fast_set = e_.stats.substeps = 0;
   if (moving && target > e_.time) {
     if (e_.lists.stale) {
       e_.resort_and_rebuild_lists();
@@ -191,7 +192,12 @@ void LocalStepper::step(double limit) {
     Blowup blowup;
     e_.integrator->advance(e_.state, e_.forces, target - e_.time, blowup);
     e_.integrator->contact_facts(e_.facts);
-    e_.stats.particle_steps += double(moving) + e_.integrator->substep_particle_steps();
+    const SubstepReport sub = e_.integrator->substeps();
+    e_.stats.fast_set = sub.fast;
+    e_.stats.substeps = sub.taken;
+    // Every sub-step of the fast set counts, the first as its share of the step.
+    e_.stats.particle_steps +=
+        double(moving) + double(sub.fast) * double(sub.taken > 0 ? sub.taken - 1 : 0);
     e_.stats.contacts = e_.facts.contacts;
     e_.stats.max_overlap_ratio = std::max(e_.stats.max_overlap_ratio, e_.facts.max_overlap_ratio);
     if (blowup.found) e_.throw_blowup(blowup, target);
