@@ -55,7 +55,7 @@ class ExponentialIntegrator final : public Integrator {
     // Carried steps: the local stepper chooses the next step once the members and the lists
     // are up to date (refresh_step).
     if (carried_)
-      find_carriers();
+      find_carriers(s);
     else
       step_ = choose_step(s);
   }
@@ -97,14 +97,14 @@ class ExponentialIntegrator final : public Integrator {
     in.read(reinterpret_cast<char*>(&step_), 8);
     projection_.load(in);
     limit_ = {};  // a report only: not kept, not known until the step is next chosen
-    if (carried_) find_carriers();
+    if (carried_) find_carriers(*ctx_.state);  // the state is loaded first
   }
   std::size_t bytes() const override {
     return projection_.bytes() +
            (drag_.capacity() + start_x_.capacity() + start_y_.capacity() + carrier_.capacity()) *
                8 +
            (parent_.capacity() + carried_ids_.capacity()) * 4 + touching_.capacity() +
-           largest_.capacity() * 8 + in_fast_.capacity() + aside_.capacity() +
+           still_.capacity() + largest_.capacity() * 8 + in_fast_.capacity() + aside_.capacity() +
            (fast_.capacity() + others_.capacity() + touched_.capacity() + fast_rows_.capacity()) *
                4;
   }
@@ -341,10 +341,14 @@ class ExponentialIntegrator final : public Integrator {
     return limited(fastest(s, from));
   }
 
-  // Carried steps: the grains held together by the forces the last step left (the projection's
-  // held pairs), as sets (union-find), each grain given its set's largest radius.
-  void find_carriers() {
+  // Carried steps: the moving grains held together by the forces the last step left (the
+  // projection's held pairs), as sets (union-find), each grain given its set's largest radius.
+  // A frozen grain carries nothing: a grain resting on the bed keeps its own pace.
+  void find_carriers(const EngineState& s) {
     const std::vector<double>& d = *ctx_.sample_diameter;
+    still_.resize(d.size(), 0);
+    for (std::size_t k = 0; k < s.size(); ++k)
+      if (s.frozen[k]) still_[s.origin[k]] = 1;
     for (std::uint32_t id : carried_ids_) {
       carrier_[id] = 0.5 * d[id];
       parent_[id] = id;
@@ -357,7 +361,8 @@ class ExponentialIntegrator final : public Integrator {
     };
     for (const PairHistory::Entry& e : projection_.held_pairs()) {
       const std::uint32_t a = std::uint32_t(e.key >> 32), b = std::uint32_t(e.key & 0xFFFFFFFFu);
-      if (ContactProjection::is_wall(b) || a >= d.size() || b >= d.size()) continue;
+      if (ContactProjection::is_wall(b) || a >= d.size() || b >= d.size() || still_[a] || still_[b])
+        continue;
       carried_ids_.push_back(a);
       carried_ids_.push_back(b);
       const std::uint32_t ra = root(a), rb = root(b);
@@ -375,6 +380,7 @@ class ExponentialIntegrator final : public Integrator {
       touching_[id] = 1;
     }
     for (std::uint32_t id : carried_ids_) largest_[id] = 0;
+    for (std::size_t k = 0; k < s.size(); ++k) still_[s.origin[k]] = 0;
   }
 
   // Carried steps: the longest step in which no moving grain travels more than
@@ -465,6 +471,7 @@ class ExponentialIntegrator final : public Integrator {
   std::vector<std::uint32_t> parent_, carried_ids_;  // union-find by sample index; its members
   std::vector<double> closing_;         // carried_step's scratch: each particle's speed and floor
   std::vector<std::uint8_t> touching_;  // by sample index: in carried_ids_
+  std::vector<std::uint8_t> still_;     // find_carriers' scratch, by sample index: frozen
   std::vector<double> drag_;            // per particle: its drag coefficient over this step
   std::vector<std::uint8_t> constrained_;  // per particle, zero between steps
   ProjectionFacts facts_;

@@ -78,6 +78,7 @@ struct IntegratorContext {
   bool carried_steps = false;
   const std::vector<double>* sample_diameter = nullptr;
   const std::vector<double>* allowance = nullptr;
+  const EngineState* state = nullptr;  // the engine's (carried steps: its frozen grains on load)
 };
 
 // What set the step with local steps (the bench reports it, docs/engine.md): the members

@@ -134,6 +134,7 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
   ctx.carried_steps = carried;
   ctx.sample_diameter = &sample.particles.diameter;
   ctx.allowance = &allowance;
+  ctx.state = &state;
   drag = ctx.drag;
   integrator = make_integrator(setup.integrator, ctx);
   freeze.height =
