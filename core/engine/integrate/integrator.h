@@ -35,7 +35,10 @@
 //   moves with it, may travel crossing_fraction of the coarser one's radius a step (bounded by
 //   its lists' margin and its box), and every listed pair at most closes by its gap plus
 //   crossing_fraction (r_i + r_j): the same bound on how deep two grains can meet, without a
-//   pushed fine grain setting every member's step.
+//   pushed fine grain setting every member's step. With carried sub-steps the grains the step
+//   would carry further than their own radius allows, and every member that could reach them
+//   within it, take sub-steps of their own inside it at the own-radius rule, the others held
+//   still: the one-rate scheme's contacts at carried steps' count of steps.
 
 #include <algorithm>
 #include <cstdint>
