@@ -106,15 +106,16 @@ TEST(CarriedSteps, ACrowdFallsAsWithoutThem) {
 // The carriers come from the contacts the checkpoint holds and the boxes' allowances from the
 // boxes it holds: a run interrupted while fine grains are being carried resumes to the same
 // bits.
-void expect_resume_bit_for_bit(Scene scene) {
+// `name` keeps the checkpoints of two tests apart (ctest runs them side by side).
+void expect_resume_bit_for_bit(Scene scene, const std::string& name) {
   scene.forces.drag = "di_felice";
   const double hw = scene.cylinder.half_width();
   const auto grains = test::scattered(
       600, -0.2 * hw, 0.2 * hw, 0.0005, 0.008,
       [](int k) { return k % 3 == 0 ? 70e-6 : (k % 3 == 1 ? 20e-6 : 4e-6); }, 5, 0.0);
-  auto checkpoint = [](int k) {
+  auto checkpoint = [&](int k) {
     return (std::filesystem::temp_directory_path() /
-            ("sedem_carried_test_" + std::to_string(k) + ".ckpt"))
+            ("sedem_" + name + "_test_" + std::to_string(k) + ".ckpt"))
         .string();
   };
   // Interrupted at every 20 ms: some of those stops fall while grains are carried.
@@ -144,13 +145,13 @@ void expect_resume_bit_for_bit(Scene scene) {
 }
 
 TEST(CarriedSteps, ResumeBitForBit) {
-  expect_resume_bit_for_bit(carried_scene(true));
+  expect_resume_bit_for_bit(carried_scene(true), "carried");
 }
 
 // The fast set is found anew from the state each step, and the forces of its pairs are kept
 // while the others step: a run stopped between two steps resumes to the same bits.
 TEST(CarriedSubsteps, ResumeBitForBit) {
-  expect_resume_bit_for_bit(substep_scene());
+  expect_resume_bit_for_bit(substep_scene(), "carried_substeps");
 }
 
 // A coarse grain falling onto a fine one: with sub-steps the pair falls as with every grain
