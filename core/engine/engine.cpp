@@ -15,8 +15,9 @@
 namespace sedem {
 
 namespace {
-// The last byte is the format's version: 2 keeps the candidate lists' rows in the grid's order.
-constexpr char kMagic[8] = {'S', 'E', 'D', 'E', 'M', 'C', 'K', '2'};
+// The last byte is the format's version: 2 keeps the candidate lists' rows in the grid's order;
+// 3 the stats of what set the step and of the carried sub-steps (EngineStats is written whole).
+constexpr char kMagic[8] = {'S', 'E', 'D', 'E', 'M', 'C', 'K', '3'};
 
 // The particle state and the lists' build in checkpoint order, for saving and loading alike
 // (`Parts`: EngineParts, const when saving).
