@@ -197,8 +197,7 @@ class ExponentialIntegrator final : public Integrator {
     closing_.resize(n);
     double fastest = 0;
     for (std::size_t k = 0; k < n; ++k) {
-      closing_[k] =
-          s.frozen[k] ? 0.0 : std::sqrt(s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k]) + floor_of(s, k);
+      closing_[k] = closing_speed(s, k);
       if (s.frozen[k] || floored_speed(s, k) * dt <= c * 0.5 * s.diameter[k]) continue;
       in_fast_[k] = 1;
       fast_.push_back(std::uint32_t(k));
@@ -397,8 +396,7 @@ class ExponentialIntegrator final : public Integrator {
     double rate = 0;  // per second: the inverse of the longest step allowed
     closing_.resize(n);
     for (std::size_t k = from; k < n; ++k) {
-      closing_[k] =
-          s.frozen[k] ? 0.0 : std::sqrt(s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k]) + floor_of(s, k);
+      closing_[k] = closing_speed(s, k);
       if (s.frozen[k]) continue;
       // A grain that touches nothing keeps its own radius, which its lists' margin and its box
       // always allow (and which needs no look-up by sample index, a cache miss each).
@@ -450,6 +448,11 @@ class ExponentialIntegrator final : public Integrator {
   // for a frozen one), and its speed counted at least at that.
   double floor_of(const EngineState& s, std::size_t k) const {
     return s.frozen[k] ? 0.0 : settling_ * s.diameter[k] * s.diameter[k];
+  }
+  // The most a grain can add to a pair's closing speed within a step: its speed and its
+  // settling speed, which it may gain (0 for a frozen one).
+  double closing_speed(const EngineState& s, std::size_t k) const {
+    return s.frozen[k] ? 0.0 : std::sqrt(s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k]) + floor_of(s, k);
   }
   double floored_speed(const EngineState& s, std::size_t k) const {
     const double v2 = s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k], floor = floor_of(s, k);
