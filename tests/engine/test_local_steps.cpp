@@ -152,10 +152,13 @@ TEST(LocalSteps, KeepTheirPromiseInACrowdedSuspension) {
   scene.integrator.local_steps = true;
   scene.integrator.freeze_settled = true;
   const double hw = scene.cylinder.half_width();
-  // Own radii; carried steps; carried steps with sub-steps of the fast set.
-  for (int carried : {0, 1, 2}) {
-    scene.integrator.carried_fraction = carried == 0 ? 0.0 : (carried == 1 ? 0.2 : 0.8);
+  // Own radii; carried steps; carried steps with sub-steps of the fast set; own radii at the
+  // longest crossing (a member then travels the most of its box's allowance in a step).
+  const double crossing = scene.integrator.crossing_fraction;
+  for (int carried : {0, 1, 2, 3}) {
+    scene.integrator.carried_fraction = carried % 3 == 0 ? 0.0 : (carried == 1 ? 0.2 : 0.8);
     scene.integrator.carried_substeps = carried == 2;
+    scene.integrator.crossing_fraction = carried == 3 ? 1.0 : crossing;
     Engine engine(engine_setup(scene), sample_of(test::crowd(-0.3 * hw, 0.3 * hw, 0.0005, 0.012)));
     std::int64_t engaged = 0;
     while (engine.time() < 0.5) {

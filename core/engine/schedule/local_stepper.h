@@ -84,8 +84,13 @@ class LocalStepper {
   // Boxes are widened by (1 + kSkin) radii.
   static constexpr double kSkin = 0.5;
   // A member's box lets it travel kAllowance radii, and moves with it once it has travelled
-  // kReanchor.
-  static constexpr double kAllowance = 3.0;
+  // kReanchor. Re-anchored past kReanchor at a step's end, it travels at most
+  // crossing_fraction <= 1 radius in the next step: 2 is the least allowance that holds it (the
+  // skin holds the projection's corrections). The boxes' side is in radii, not spacings, so the
+  // share of the section they cover grows with the count: at a million grains in sample 5 the
+  // members' boxes at 3 radii reached their neighbours' and a third of the grains joined the
+  // common step (docs/results/engine.md, "Members' boxes").
+  static constexpr double kAllowance = 2.0;
   static constexpr double kReanchor = 1.0;
   // Relative gap to the terminal velocity of a long window.
   static constexpr double kConverged = 1e-3;
