@@ -17,8 +17,8 @@ namespace sedem {
 namespace {
 // The last byte is the format's version: 2 keeps the candidate lists' rows in the grid's order;
 // 3 the stats of what set the step and of the carried sub-steps (EngineStats is written whole);
-// 4 members' boxes of 2 radii' allowance (a box of 3 read back as 2 would resume, safely, as
-// neither version's run).
+// 4 members' boxes with an allowance of 2 radii (a box of 3 read back as 2 would resume,
+// safely, as neither version's run).
 constexpr char kMagic[8] = {'S', 'E', 'D', 'E', 'M', 'C', 'K', '4'};
 
 // The particle state and the lists' build in checkpoint order, for saving and loading alike

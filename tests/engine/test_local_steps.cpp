@@ -152,23 +152,33 @@ TEST(LocalSteps, KeepTheirPromiseInACrowdedSuspension) {
   scene.integrator.local_steps = true;
   scene.integrator.freeze_settled = true;
   const double hw = scene.cylinder.half_width();
-  // Own radii; carried steps; carried steps with sub-steps of the fast set; own radii at the
-  // longest crossing (a member then travels the most of its box's allowance in a step).
+  // Own radii at the longest crossing lets a member travel the most of its box's allowance in
+  // a step.
+  struct Mode {
+    const char* name;
+    double carried_fraction;
+    bool substeps;
+    double crossing_fraction;
+  };
   const double crossing = scene.integrator.crossing_fraction;
-  for (int carried : {0, 1, 2, 3}) {
-    scene.integrator.carried_fraction = carried % 3 == 0 ? 0.0 : (carried == 1 ? 0.2 : 0.8);
-    scene.integrator.carried_substeps = carried == 2;
-    scene.integrator.crossing_fraction = carried == 3 ? 1.0 : crossing;
+  for (const Mode& mode :
+       {Mode{"own radii", 0.0, false, crossing}, Mode{"carried steps", 0.2, false, crossing},
+        Mode{"carried sub-steps", 0.8, true, crossing},
+        Mode{"own radii, crossing 1", 0.0, false, 1.0}}) {
+    scene.integrator.carried_fraction = mode.carried_fraction;
+    scene.integrator.carried_substeps = mode.substeps;
+    scene.integrator.crossing_fraction = mode.crossing_fraction;
     Engine engine(engine_setup(scene), sample_of(test::crowd(-0.3 * hw, 0.3 * hw, 0.0005, 0.012)));
     std::int64_t engaged = 0;
     while (engine.time() < 0.5) {
       engine.step(0.5);
       const std::string broken = engine.local_violation();
-      ASSERT_EQ(broken, "") << "carried steps " << carried << " at t = " << engine.time()
-                            << " s, step " << engine.stats().steps;
+      ASSERT_EQ(broken, "") << mode.name << " at t = " << engine.time() << " s, step "
+                            << engine.stats().steps;
       engaged = engine.stats().engaged;
     }
-    EXPECT_GT(engaged, 100) << engaged;  // the suspension did crowd the common step
+    EXPECT_GT(engaged, 100) << mode.name << ": "
+                            << engaged;  // the suspension did crowd the common step
   }
 }
 
