@@ -224,6 +224,50 @@ void ContactProjection::index_participants(const EngineState& s, const std::vect
   }
 }
 
+// Union-find over the slots, by the pairs' constraints; islands numbered in order of their first
+// slot, so that they do not depend on the thread count.
+void ContactProjection::find_islands() {
+  const std::size_t slots = particle_.size();
+  std::vector<std::uint32_t>& parent = island_parent_;
+  parent.resize(slots);
+  for (std::uint32_t k = 0; k < slots; ++k) parent[k] = k;
+  auto root = [&](std::uint32_t k) {
+    while (parent[k] != k) k = parent[k] = parent[parent[k]];
+    return k;
+  };
+  for (const Constraint& c : constraints_) {
+    if (c.b >= kSide) continue;
+    const std::uint32_t a = root(c.slot_a), b = root(c.slot_b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+  // A parent is never above its child, so in slot order each parent is already its root, and
+  // each root (the least slot of its island) is numbered before the rest of its island.
+  island_of_slot_.resize(slots);
+  std::uint32_t islands = 0;
+  for (std::uint32_t k = 0; k < slots; ++k) {
+    parent[k] = parent[parent[k]];
+    island_of_slot_[k] = parent[k] == k ? islands++ : island_of_slot_[parent[k]];
+  }
+  island_of_constraint_.resize(constraints_.size());
+  for (std::size_t k = 0; k < constraints_.size(); ++k)
+    island_of_constraint_[k] = island_of_slot_[constraints_[k].slot_a];
+  excess_.resize(constraints_.size());
+  island_worst_.assign(islands, 0.0);
+  converged_.assign(islands, 0);
+}
+
+// After a solving sweep: the islands whose constraints were all within kTolerance of their
+// targets at its start are converged (the sweep moved them once more, as the last sweep of
+// one island alone would).
+bool ContactProjection::mark_converged() {
+  bool all = true;
+  for (std::size_t i = 0; i < island_worst_.size(); ++i) {
+    if (island_worst_[i] < kTolerance) converged_[i] = 1;
+    all = all && converged_[i];
+  }
+  return all;
+}
+
 double ContactProjection::friction_change(Constraint& c, const EngineState& s, double dx, double dy,
                                           double dist, double share_a, double share_b) {
   const std::size_t ka = c.slot_a, kb = c.slot_b;
@@ -244,7 +288,7 @@ double ContactProjection::friction_change(Constraint& c, const EngineState& s, d
   return change;
 }
 
-double ContactProjection::sweep(EngineState& s, Mode mode) {
+void ContactProjection::sweep(EngineState& s, Mode mode) {
   double* x = s.x.data();
   double* y = s.y.data();
   const double* d = s.diameter.data();
@@ -259,16 +303,33 @@ double ContactProjection::sweep(EngineState& s, Mode mode) {
     return solving ? dl : force;
   };
   const std::size_t constraints = constraints_.size(), slots = particle_.size();
-  double worst = 0;
-#pragma omp parallel num_threads(threads_) if (threads_ > 1 && constraints >= kParallelFrom)
+  const bool parallel = threads_ > 1 && constraints >= kParallelFrom;
+  // Solving, the islands already converged stay as they are, and each of the others gets the
+  // largest excess of its constraints: on one thread directly, on several through the
+  // constraints' own (two threads may share an island).
+  const std::uint8_t* done = solving ? converged_.data() : nullptr;
+  const std::uint32_t* island = island_of_constraint_.data();
+  const std::uint32_t* island_of_slot = island_of_slot_.data();
+  double* excess = excess_.data();
+  double* island_worst = island_worst_.data();
+  if (solving) std::fill(island_worst_.begin(), island_worst_.end(), 0.0);
+  auto note = [&](std::size_t k, double e) {
+    if (parallel)
+      excess[k] = e;
+    else
+      island_worst[island[k]] = std::max(island_worst[island[k]], e);
+  };
+#pragma omp parallel num_threads(threads_) if (parallel)
   {
-#pragma omp for schedule(static) reduction(max : worst)
+#pragma omp for schedule(static)
     for (std::size_t k = 0; k < constraints; ++k) {
       Constraint& c = constraints_[k];
+      c.mx = c.my = c.mt = 0;
+      if (done && done[island[k]]) continue;
+      if (solving && parallel) excess[k] = 0;
       const std::uint32_t a = c.a;
       const double ra = 0.5 * d[a];
       const double share_a = mobility_[c.slot_a] * std::max<std::uint32_t>(count_[c.slot_a], 1);
-      c.mx = c.my = c.mt = 0;
       if (c.b >= kSide) {
         double overlap = ra - y[a], direction = 0;
         if (c.b == kSide) {
@@ -279,7 +340,7 @@ double ContactProjection::sweep(EngineState& s, Mode mode) {
         }
         c.active = overlap > 0 || c.lambda > 0;
         if (starting || !c.active) continue;
-        worst = std::max(worst, (overlap - c.lambda * compliance) / ra);
+        if (solving) note(k, (overlap - c.lambda * compliance) / ra);
         const double f = change(c.lambda, overlap, share_a + compliance);
         (c.b == kSide ? c.mx : c.my) = c.b == kSide ? direction * f : f;
         continue;
@@ -292,7 +353,7 @@ double ContactProjection::sweep(EngineState& s, Mode mode) {
       if (starting || !c.active) continue;
       const double share_b = mobility_[c.slot_b] * std::max<std::uint32_t>(count_[c.slot_b], 1);
       const double dist = std::sqrt(dist2);
-      worst = std::max(worst, (reach - dist - c.lambda * compliance) / std::min(ra, rb));
+      if (solving) note(k, (reach - dist - c.lambda * compliance) / std::min(ra, rb));
       const double u = change(c.lambda, reach - dist, share_a + share_b + compliance) / dist;
       c.mx = -u * dx;
       c.my = -u * dy;
@@ -306,6 +367,7 @@ double ContactProjection::sweep(EngineState& s, Mode mode) {
     }
 #pragma omp for schedule(static)
     for (std::size_t k = 0; k < slots; ++k) {
+      if (done && done[island_of_slot[k]]) continue;
       const double w = mobility_[k];
       double dx = 0, dy = 0, torque = 0;
       std::uint32_t count = 0;
@@ -328,7 +390,9 @@ double ContactProjection::sweep(EngineState& s, Mode mode) {
       moved_y_[k] += dy;
     }
   }
-  return worst;
+  if (solving && parallel)
+    for (std::size_t k = 0; k < constraints; ++k)
+      if (!done[island[k]]) island_worst[island[k]] = std::max(island_worst[island[k]], excess[k]);
 }
 
 void ContactProjection::keep(const EngineState& s, const std::uint8_t* aside) {
@@ -422,14 +486,18 @@ ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid
   if (facts.touching == 0) {  // every particle stays at its free position
     if (warm_.size() > 0) keep(s, aside);
   } else {
+    find_islands();
     bool warm = false;
     for (const Constraint& c : constraints_) warm = warm || c.lambda > 0;
     if (warm) sweep(s, Mode::warm);
     // Sweeps until every overlap is within kTolerance of the smaller radius of its compliant
-    // target (checked at the positions each sweep starts from), at most sweeps_; then one more,
-    // whose forces are kept for the next step.
-    for (int k = 0; k < sweeps_; ++k)
-      if (sweep(s, Mode::solve) < kTolerance) break;
+    // target (checked at the positions each sweep starts from), at most sweeps_, each island
+    // until its own are; then one more over all, whose forces are kept for the next step.
+    for (int k = 0; k < sweeps_; ++k) {
+      sweep(s, Mode::solve);
+      if (mark_converged()) break;
+    }
+    std::fill(converged_.begin(), converged_.end(), 0);
     sweep(s, Mode::solve);
     keep(s, aside);
     const double* d = s.diameter.data();

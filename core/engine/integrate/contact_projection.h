@@ -5,11 +5,14 @@
 // gets a force lambda >= 0 that, applied constantly over the step, moves particle i by w_i lambda
 // along the normal (w_i: its mobility, the displacement per unit force over the step) and leaves
 // the overlap at lambda / K_N (compliance 1/K_N: a backward-Euler normal spring). The forces are
-// found by a few Jacobi sweeps over the constraints,
+// found by Jacobi sweeps over the constraints,
 //   dlambda = max(-lambda, (overlap - lambda / K_N) / (n_a w_a + n_b w_b + 1 / K_N)),
 // n the number of contacts of each particle: a Gershgorin bound on the constraint system, so
 // every sweep is a contraction. Each pair's dlambda is computed once and moves both partners
-// (exact action and reaction).
+// (exact action and reaction). The sweeps go on until every overlap is within a tolerance of
+// its target; each *island* (particles linked by constraints, touching or within the skin, which
+// move only each other) stops on its own once it is within it: one deep pile no longer keeps
+// every other pair of the members sweeping to the last of the sweeps.
 //
 // One pass over the candidate lists (contact/candidate_lists.h), at the free positions, collects
 // the constraints: every pair or wall closer than a skin of half the smaller radius, or that held a
@@ -133,9 +136,15 @@ class ContactProjection {
   // The tangential force's change of constraint c in a solving sweep (sets c.mt), friction on.
   double friction_change(Constraint& c, const EngineState& s, double dx, double dy, double dist,
                          double share_a, double share_b);
-  // One sweep at the current positions; moves the participants. Returns the largest overlap
-  // beyond its compliant target / smaller radius among the active constraints.
-  double sweep(EngineState& s, Mode mode);
+  // One sweep at the current positions; moves the participants. Solving, it notes each active
+  // constraint's overlap beyond its compliant target / smaller radius, and leaves the islands
+  // already converged as they are.
+  void sweep(EngineState& s, Mode mode);
+  // The islands: participants linked by pairs' constraints (touching or within the skin), which
+  // move only each other.
+  void find_islands();
+  // After a solving sweep: marks the islands it found converged; true once all are.
+  bool mark_converged();
   void keep(const EngineState& s, const std::uint8_t* aside);
 
   ForceModel model_;
@@ -155,7 +164,13 @@ class ContactProjection {
   const double *start_x_ = nullptr, *start_y_ = nullptr;
   bool friction_ = false;
   std::vector<std::uint32_t> slot_of_;  // per particle (engine order): its slot, or kNone
-  std::vector<std::uint8_t> held_;      // per particle (sample order): had a force last step
+  // Islands: per slot its island; per constraint its island and its excess in the last sweep
+  // (overlap beyond its compliant target / smaller radius); per island whether it converged.
+  std::vector<std::uint32_t> island_of_slot_, island_of_constraint_;
+  std::vector<double> excess_, island_worst_;
+  std::vector<std::uint8_t> converged_;
+  std::vector<std::uint32_t> island_parent_;  // find_islands' union-find
+  std::vector<std::uint8_t> held_;            // per particle (sample order): had a force last step
   std::vector<std::uint32_t> held_list_;
   std::vector<PairHistory::Entry> kept_;
   PairHistory warm_;  // forces at the end of the last step; walls as partners kSide, kFloor
