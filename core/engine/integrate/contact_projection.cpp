@@ -39,9 +39,12 @@ std::size_t ContactProjection::bytes() const {
   std::size_t b = 0;
   for (const auto& f : found_) b += f.capacity() * sizeof(Constraint);
   b += constraints_.capacity() * sizeof(Constraint) + incidences_.capacity() * sizeof(Incidence);
-  for (const auto* v : {&particle_, &count_, &first_, &slot_of_, &held_list_})
+  for (const auto* v : {&particle_, &count_, &first_, &slot_of_, &held_list_, &island_of_slot_,
+                        &island_of_constraint_, &island_parent_})
     b += v->capacity() * 4;
-  for (const auto* v : {&mobility_, &response_, &moved_x_, &moved_y_}) b += v->capacity() * 8;
+  for (const auto* v : {&mobility_, &response_, &moved_x_, &moved_y_, &excess_, &island_worst_})
+    b += v->capacity() * 8;
+  b += converged_.capacity();
   for (const auto* v : {&spin_mobility_, &turned_}) b += v->capacity() * 8;
   b += held_.capacity() + kept_.capacity() * sizeof(PairHistory::Entry);
   for (const auto* v : {&kept_tangential_, &set_aside_, &set_aside_tangential_})

@@ -12,7 +12,7 @@
 // (exact action and reaction). The sweeps go on until every overlap is within a tolerance of
 // its target; each *island* (particles linked by constraints, touching or within the skin, which
 // move only each other) stops on its own once it is within it: one deep pile no longer keeps
-// every other pair of the members sweeping to the last of the sweeps.
+// every other pair of the step sweeping to the last of the sweeps.
 //
 // One pass over the candidate lists (contact/candidate_lists.h), at the free positions, collects
 // the constraints: every pair or wall closer than a skin of half the smaller radius, or that held a
