@@ -40,8 +40,9 @@ std::size_t ContactProjection::bytes() const {
   for (const auto& f : found_) b += f.capacity() * sizeof(Constraint);
   b += constraints_.capacity() * sizeof(Constraint) + incidences_.capacity() * sizeof(Incidence);
   for (const auto* v : {&particle_, &count_, &first_, &slot_of_, &held_list_, &island_of_slot_,
-                        &island_of_constraint_, &island_parent_})
+                        &island_of_constraint_})
     b += v->capacity() * 4;
+  b += islands_.bytes();
   for (const auto* v : {&mobility_, &response_, &moved_x_, &moved_y_, &excess_, &island_worst_})
     b += v->capacity() * 8;
   b += converged_.capacity();
@@ -231,25 +232,16 @@ void ContactProjection::index_participants(const EngineState& s, const std::vect
 // slot, so that they do not depend on the thread count.
 void ContactProjection::find_islands() {
   const std::size_t slots = particle_.size();
-  std::vector<std::uint32_t>& parent = island_parent_;
-  parent.resize(slots);
-  for (std::uint32_t k = 0; k < slots; ++k) parent[k] = k;
-  auto root = [&](std::uint32_t k) {
-    while (parent[k] != k) k = parent[k] = parent[parent[k]];
-    return k;
-  };
-  for (const Constraint& c : constraints_) {
-    if (c.b >= kSide) continue;
-    const std::uint32_t a = root(c.slot_a), b = root(c.slot_b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-  // A parent is never above its child, so in slot order each parent is already its root, and
-  // each root (the least slot of its island) is numbered before the rest of its island.
+  islands_.assign(slots);
+  for (const Constraint& c : constraints_)
+    if (c.b < kSide) islands_.unite(c.slot_a, c.slot_b);
+  // Each root (the least slot of its island) is numbered before the rest of its island.
+  islands_.flatten();
   island_of_slot_.resize(slots);
   std::uint32_t islands = 0;
   for (std::uint32_t k = 0; k < slots; ++k) {
-    parent[k] = parent[parent[k]];
-    island_of_slot_[k] = parent[k] == k ? islands++ : island_of_slot_[parent[k]];
+    const std::uint32_t r = islands_.flat_root(k);
+    island_of_slot_[k] = r == k ? islands++ : island_of_slot_[r];
   }
   island_of_constraint_.resize(constraints_.size());
   for (std::size_t k = 0; k < constraints_.size(); ++k)

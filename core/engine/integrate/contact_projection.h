@@ -44,6 +44,7 @@
 #include "core/engine/contact/neighbour_grid.h"
 #include "core/engine/forces/force_model.h"
 #include "core/engine/instability.h"
+#include "core/engine/state/disjoint_sets.h"
 #include "core/engine/state/engine_state.h"
 #include "core/engine/state/pair_history.h"
 
@@ -169,8 +170,8 @@ class ContactProjection {
   std::vector<std::uint32_t> island_of_slot_, island_of_constraint_;
   std::vector<double> excess_, island_worst_;
   std::vector<std::uint8_t> converged_;
-  std::vector<std::uint32_t> island_parent_;  // find_islands' union-find
-  std::vector<std::uint8_t> held_;            // per particle (sample order): had a force last step
+  DisjointSets islands_;            // find_islands' union-find over slots
+  std::vector<std::uint8_t> held_;  // per particle (sample order): had a force last step
   std::vector<std::uint32_t> held_list_;
   std::vector<PairHistory::Entry> kept_;
   PairHistory warm_;  // forces at the end of the last step; walls as partners kSide, kFloor

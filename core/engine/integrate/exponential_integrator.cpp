@@ -8,6 +8,7 @@
 #include "core/engine/integrate/contact_projection.h"
 #include "core/engine/integrate/integration_pass.h"
 #include "core/engine/integrate/integrator.h"
+#include "core/engine/state/disjoint_sets.h"
 
 namespace sedem {
 
@@ -35,12 +36,9 @@ class ExponentialIntegrator final : public Integrator {
       const std::vector<double>& d = *ctx_.sample_diameter;
       carrier_.resize(d.size());
       largest_.assign(d.size(), 0.0);
-      parent_.resize(d.size());
+      carrying_.assign(d.size());
       touching_.assign(d.size(), 0);
-      for (std::size_t i = 0; i < d.size(); ++i) {
-        carrier_[i] = 0.5 * d[i];
-        parent_[i] = std::uint32_t(i);
-      }
+      for (std::size_t i = 0; i < d.size(); ++i) carrier_[i] = 0.5 * d[i];
     }
   }
   const char* name() const override { return "exponential"; }
@@ -103,7 +101,7 @@ class ExponentialIntegrator final : public Integrator {
     return projection_.bytes() +
            (drag_.capacity() + start_x_.capacity() + start_y_.capacity() + carrier_.capacity()) *
                8 +
-           (parent_.capacity() + carried_ids_.capacity()) * 4 + touching_.capacity() +
+           carrying_.bytes() + carried_ids_.capacity() * 4 + touching_.capacity() +
            still_.capacity() + largest_.capacity() * 8 + in_fast_.capacity() + aside_.capacity() +
            (fast_.capacity() + others_.capacity() + touched_.capacity() + fast_rows_.capacity()) *
                4;
@@ -350,31 +348,26 @@ class ExponentialIntegrator final : public Integrator {
       if (s.frozen[k]) still_[s.origin[k]] = 1;
     for (std::uint32_t id : carried_ids_) {
       carrier_[id] = 0.5 * d[id];
-      parent_[id] = id;
+      carrying_.make_single(id);
       touching_[id] = 0;
     }
     carried_ids_.clear();
-    auto root = [&](std::uint32_t a) {
-      while (parent_[a] != a) a = parent_[a] = parent_[parent_[a]];
-      return a;
-    };
     for (const PairHistory::Entry& e : projection_.held_pairs()) {
       const std::uint32_t a = std::uint32_t(e.key >> 32), b = std::uint32_t(e.key & 0xFFFFFFFFu);
       if (ContactProjection::is_wall(b) || a >= d.size() || b >= d.size() || still_[a] || still_[b])
         continue;
       carried_ids_.push_back(a);
       carried_ids_.push_back(b);
-      const std::uint32_t ra = root(a), rb = root(b);
-      if (ra != rb) parent_[ra] = rb;
+      carrying_.unite(a, b);
     }
     for (std::uint32_t id : carried_ids_) {
-      const std::uint32_t r = root(id);
+      const std::uint32_t r = carrying_.root(id);
       largest_[r] = std::max(largest_[r], 0.5 * d[id]);
     }
     const double scale = config_.carried_fraction / config_.crossing_fraction;
     any_carried_ = false;
     for (std::uint32_t id : carried_ids_) {
-      carrier_[id] = std::max(0.5 * d[id], scale * largest_[root(id)]);
+      carrier_[id] = std::max(0.5 * d[id], scale * largest_[carrying_.root(id)]);
       any_carried_ = any_carried_ || carrier_[id] > 0.5 * d[id];
       touching_[id] = 1;
     }
@@ -471,7 +464,8 @@ class ExponentialIntegrator final : public Integrator {
   std::size_t taken_ = 0;
   std::vector<double> carrier_;  // by sample index: see carrier_radii()
   std::vector<double> largest_;  // find_carriers' scratch: each set's largest radius, at its root
-  std::vector<std::uint32_t> parent_, carried_ids_;  // union-find by sample index; its members
+  DisjointSets carrying_;        // find_carriers' sets, by sample index
+  std::vector<std::uint32_t> carried_ids_;  // their members
   std::vector<double> closing_;         // carried_step's scratch: each particle's speed and floor
   std::vector<std::uint8_t> touching_;  // by sample index: in carried_ids_
   std::vector<std::uint8_t> still_;     // find_carriers' scratch, by sample index: frozen
