@@ -104,8 +104,26 @@ void LocalStepper::load(std::istream& in) {
 // inside its box, no coasting grain's window has ended, and only grains that the common step
 // handles (members, and settled grains beside frozen ones) hold overlapping boxes. One
 // exception: a grain synced ahead of the members in a step a joining grain then shortened
-// keeps its old box too, where a grain synced after it may have passed since.
+// keeps its old box too, where a grain synced after it may have passed since. Also: the
+// members' copies of their tracks match the tracks, and a member's weight lies in the voidage
+// cell it is in.
 std::string LocalStepper::violation() const {
+  if (member_track_.size() != e_.state.size())
+    return std::to_string(member_track_.size()) + " copies of tracks for " +
+           std::to_string(e_.state.size()) + " members";
+  for (std::size_t k = 0; k < e_.state.size(); ++k) {
+    const std::uint32_t id = e_.state.origin[k];
+    const MemberTrack& m = member_track_[k];
+    const std::string member =
+        "member " + std::to_string(k) + " (grain " + std::to_string(id) + ")";
+    if (m.x != track_[id].flight.x || m.y != track_[id].flight.y ||
+        m.cell != track_[id].deposit_cell)
+      return member + ": its copy of its track differs from the track";
+    if (e_.model.drag == DragLaw::di_felice &&
+        m.cell != e_.voidage.cell(e_.state.x[k], e_.state.y[k]))
+      return member + ": its weight is in voidage cell " + std::to_string(m.cell) +
+             ", not in the one it is in";
+  }
   if (!e_.model.contact) return {};
   const Particles& s = e_.sample.particles;
   const std::size_t n = kind_.size();

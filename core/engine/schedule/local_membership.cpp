@@ -29,6 +29,7 @@ void LocalStepper::engage(std::uint32_t id, const FreeFlight::Point& p, bool fro
   member_[id] = std::uint32_t(k);
   kind_[id] = frozen ? GrainKind::frozen : GrainKind::moving;
   move_deposit(id, p.x, p.y);
+  member_track_.push_back({track_[id].flight.x, track_[id].flight.y, track_[id].deposit_cell});
   members_changed_ = true;
   ++e_.stats.engaged;
   wake_.push_back(id);
@@ -66,8 +67,8 @@ void LocalStepper::wake_around(std::uint32_t first) {
 
 void LocalStepper::anchor(std::size_t k) {
   const std::uint32_t id = e_.state.origin[k];
-  track_[id].flight.x = e_.state.x[k];
-  track_[id].flight.y = e_.state.y[k];
+  track_[id].flight.x = member_track_[k].x = e_.state.x[k];
+  track_[id].flight.y = member_track_[k].y = e_.state.y[k];
   if (e_.model.contact)
     boxes_.set(id, member_box(k),
                box_tag(e_.state.frozen[k] ? GrainKind::frozen : GrainKind::moving));
@@ -103,9 +104,11 @@ void LocalStepper::remove_member(std::size_t k) {
       (*v)[k] = (*v)[last];
     e_.state.origin[k] = e_.state.origin[last];
     e_.state.frozen[k] = e_.state.frozen[last];
+    member_track_[k] = member_track_[last];
     member_[e_.state.origin[k]] = std::uint32_t(k);
   }
   e_.state.resize(last);
+  member_track_.resize(last);
   e_.lists.search.resize(last);
   e_.lists.x0.resize(last);
   e_.lists.y0.resize(last);
@@ -159,7 +162,14 @@ void LocalStepper::settle_members() {
 }
 
 void LocalStepper::index_members() {
-  for (std::size_t k = 0; k < e_.state.size(); ++k) member_[e_.state.origin[k]] = std::uint32_t(k);
+  member_track_.resize(e_.state.size());
+  for (std::size_t k = 0; k < e_.state.size(); ++k) {
+    prefetch_track(k + kPrefetchAhead);
+    const std::uint32_t id = e_.state.origin[k];
+    member_[id] = std::uint32_t(k);
+    const Track& t = track_[id];
+    member_track_[k] = {t.flight.x, t.flight.y, t.deposit_cell};
+  }
 }
 
 }  // namespace sedem

@@ -59,6 +59,7 @@ LocalStepper::LocalStepper(EngineParts& parts) : e_(parts) {
   // The state holds the members only, a few thousand at most: the room it had for every
   // grain (a sixth of the memory at a million particles) goes back.
   e_.state = EngineState{};
+  member_track_.clear();
   e_.forces = ForceAccumulators{};
   std::vector<double>().swap(e_.lists.search);
   std::vector<double>().swap(e_.lists.x0);
@@ -194,7 +195,7 @@ void LocalStepper::step(double limit) {
   if (moving && target > e_.time) {
     if (e_.lists.stale) {
       e_.resort_and_rebuild_lists();
-      index_members();
+      if (e_.resort.done_at == e_.stats.steps) index_members();
     }
     Blowup blowup;
     e_.integrator->advance(e_.state, e_.forces, target - e_.time, blowup);
@@ -209,10 +210,14 @@ void LocalStepper::step(double limit) {
     e_.stats.max_overlap_ratio = std::max(e_.stats.max_overlap_ratio, e_.facts.max_overlap_ratio);
     if (blowup.found) e_.throw_blowup(blowup, target);
     e_.lists.stale = e_.lists.stale || e_.lists.moved_beyond_margin(e_.state);
-    for (std::size_t k = 0; k < e_.state.size(); ++k) {
-      prefetch_track(k + kPrefetchAhead);
-      if (!e_.state.frozen[k]) move_deposit(e_.state.origin[k], e_.state.x[k], e_.state.y[k]);
-    }
+    if (e_.model.drag == DragLaw::di_felice)
+      for (std::size_t k = 0; k < e_.state.size(); ++k) {
+        if (e_.state.frozen[k]) continue;
+        const auto cell = std::uint32_t(e_.voidage.cell(e_.state.x[k], e_.state.y[k]));
+        if (cell == member_track_[k].cell) continue;
+        move_deposit(e_.state.origin[k], e_.state.x[k], e_.state.y[k]);
+        member_track_[k].cell = cell;
+      }
   } else if (!moving) {
     e_.stats.contacts = 0;  // no force pass this step: nothing was found touching
   }
@@ -235,14 +240,17 @@ void LocalStepper::step(double limit) {
   if (moving) {
     // Which members touch something, from this step's projection, before any joins or leaves.
     if (e_.stats.steps % kReleaseEvery == 0) e_.integrator->mark_touching(e_.forces.stiffness);
-    if (retire_height_ > 0) retire_members();
+    // A member leaving makes the lists stale: members retire when the lists are to be built
+    // anyway, or at the release's look (a few steps' wait below every instrument changes no
+    // reading; at 10^6 grains retirements had caused half of the builds).
+    if (retire_height_ > 0 && (e_.lists.stale || e_.stats.steps % kReleaseEvery == 0))
+      retire_members();
     // Members that used their allowance take a new box; whatever it reaches joins them.
     for (std::size_t k = 0; k < e_.state.size(); ++k) {
-      prefetch_track(k + kPrefetchAhead);
       if (e_.state.frozen[k]) continue;
       const std::uint32_t id = e_.state.origin[k];
-      const double dx = e_.state.x[k] - track_[id].flight.x;
-      const double dy = e_.state.y[k] - track_[id].flight.y;
+      const double dx = e_.state.x[k] - member_track_[k].x;
+      const double dy = e_.state.y[k] - member_track_[k].y;
       const double pace = kReanchor * (e_.carried ? e_.allowance[id] : 0.5 * e_.state.diameter[k]);
       if (dx * dx + dy * dy > pace * pace) wake_.push_back(id);
     }
@@ -273,7 +281,7 @@ void LocalStepper::fresh_step() {
   if (e_.carried && !e_.lists.stale && e_.carriers_outgrew_lists()) e_.lists.stale = true;
   if (e_.carried && e_.lists.stale && e_.state.size() > 0) {
     e_.resort_and_rebuild_lists();
-    index_members();
+    if (e_.resort.done_at == e_.stats.steps) index_members();
   }
   e_.integrator->refresh_step(e_.state);
 }
