@@ -114,14 +114,15 @@ std::string LocalStepper::violation() const {
   for (std::size_t k = 0; k < e_.state.size(); ++k) {
     const std::uint32_t id = e_.state.origin[k];
     const MemberTrack& m = member_track_[k];
-    const std::string member =
-        "member " + std::to_string(k) + " (grain " + std::to_string(id) + ")";
+    auto member = [&] {
+      return "member " + std::to_string(k) + " (grain " + std::to_string(id) + ")";
+    };
     if (m.x != track_[id].flight.x || m.y != track_[id].flight.y ||
         m.cell != track_[id].deposit_cell)
-      return member + ": its copy of its track differs from the track";
+      return member() + ": its copy of its track differs from the track";
     if (e_.model.drag == DragLaw::di_felice &&
         m.cell != e_.voidage.cell(e_.state.x[k], e_.state.y[k]))
-      return member + ": its weight is in voidage cell " + std::to_string(m.cell) +
+      return member() + ": its weight is in voidage cell " + std::to_string(m.cell) +
              ", not in the one it is in";
   }
   if (!e_.model.contact) return {};

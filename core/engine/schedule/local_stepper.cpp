@@ -195,6 +195,7 @@ void LocalStepper::step(double limit) {
   if (moving && target > e_.time) {
     if (e_.lists.stale) {
       e_.resort_and_rebuild_lists();
+      // Only a re-sort moves the members (joins and departures keep member_ up to date).
       if (e_.resort.done_at == e_.stats.steps) index_members();
     }
     Blowup blowup;

@@ -45,7 +45,6 @@ class DisjointSets {
   // After flatten(): the root without a walk.
   std::uint32_t flat_root(std::uint32_t i) const { return parent_[i]; }
 
-  std::size_t size() const { return parent_.size(); }
   std::size_t bytes() const { return parent_.capacity() * sizeof(std::uint32_t); }
 
  private:
