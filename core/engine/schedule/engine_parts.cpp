@@ -174,9 +174,11 @@ void EngineParts::extend_lists() {
   lists.extend(state, grid);
 }
 
-void EngineParts::resort_and_rebuild_lists() {
-  if (resort.due(stats.steps)) resort.run(state, lists.search, grid, stats.steps);
+bool EngineParts::resort_and_rebuild_lists() {
+  const bool resorted = resort.due(stats.steps);
+  if (resorted) resort.run(state, lists.search, grid, stats.steps);
   rebuild_lists();
+  return resorted;
 }
 
 void EngineParts::throw_blowup(const Blowup& b, double at) const {

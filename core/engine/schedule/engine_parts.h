@@ -34,8 +34,9 @@ struct EngineParts {
 
   // Rebuilds the candidate lists at the current positions and counts it.
   void rebuild_lists();
-  // The same, the state first re-sorted in grid order if the resort task is due.
-  void resort_and_rebuild_lists();
+  // The same, the state first re-sorted in grid order if the resort task is due; true if it was
+  // (the state's order changed).
+  bool resort_and_rebuild_lists();
   // Rows for the members appended since (CandidateLists::extend), unless the lists are stale.
   void extend_lists();
   // Throws InstabilityError for a blow-up the integrator or the force pass noted.

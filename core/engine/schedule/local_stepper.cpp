@@ -194,9 +194,8 @@ void LocalStepper::step(double limit) {
   e_.stats.fast_set = e_.stats.substeps = 0;
   if (moving && target > e_.time) {
     if (e_.lists.stale) {
-      e_.resort_and_rebuild_lists();
       // Only a re-sort moves the members (joins and departures keep member_ up to date).
-      if (e_.resort.done_at == e_.stats.steps) index_members();
+      if (e_.resort_and_rebuild_lists()) index_members();
     }
     Blowup blowup;
     e_.integrator->advance(e_.state, e_.forces, target - e_.time, blowup);
@@ -281,8 +280,7 @@ void LocalStepper::fresh_step() {
   // A grain picked up since the build would move at its own radius's pace until the next one.
   if (e_.carried && !e_.lists.stale && e_.carriers_outgrew_lists()) e_.lists.stale = true;
   if (e_.carried && e_.lists.stale && e_.state.size() > 0) {
-    e_.resort_and_rebuild_lists();
-    if (e_.resort.done_at == e_.stats.steps) index_members();
+    if (e_.resort_and_rebuild_lists()) index_members();
   }
   e_.integrator->refresh_step(e_.state);
 }
