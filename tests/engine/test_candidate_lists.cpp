@@ -134,5 +134,55 @@ TEST(CandidateLists, StaleListsAreNotExtended) {
   EXPECT_EQ(c.lists.rows(), 100u);
 }
 
+// Margins per grain follow each grain's pace: one that used more than kWidenAbove of its margin
+// since the build gets twice as much (up to kWidestMargin times the base), one that used less
+// than kNarrowBelow half as much (down to the base), the others keep theirs; the lists built
+// with them hold every pair within the new search radii, and the staleness check reads each
+// grain's own margin.
+TEST(CandidateLists, MarginsFollowEachGrainsPace) {
+  Crowd c;
+  for (int i = 0; i < 400; ++i) c.append(false);
+  c.state.diameter[1] = c.state.diameter[0];
+  c.lists.margin = 3.2;
+  c.lists.range = 1;
+  c.lists.margin_per_grain = true;
+  auto margin = [&](std::size_t k) { return c.lists.margin_of(k, c.state.diameter[k]); };
+  const double base = 3.2;
+  // Margins in radii: 0 and 1 the base, 2 four times it, 3 at the widest, 4 twice the base.
+  const double start[] = {base, base, 4 * base, CandidateLists::kWidestMargin * base, 2 * base};
+  for (std::size_t k = 0; k < c.state.size(); ++k) {
+    const double r = 0.5 * c.state.diameter[k];
+    c.lists.search[k] = r * (c.lists.range + (k < 5 ? start[k] : base));
+  }
+  c.lists.rebuild_at_build_positions(c.state, c.grid, true);
+  // 0 uses half its margin, 1 and 2 nothing, 3 all of it, 4 a quarter.
+  const double used[] = {0.5, 0, 0, 1, 0.25};
+  for (std::size_t k = 0; k < 5; ++k) c.state.y[k] += used[k] * margin(k);
+  c.lists.size_margins(c.state);
+  const double expected[] = {2 * base, base, 2 * base, CandidateLists::kWidestMargin * base,
+                             2 * base};
+  for (std::size_t k = 0; k < 5; ++k)
+    EXPECT_NEAR(margin(k) / (0.5 * c.state.diameter[k]), expected[k], 1e-9) << k;
+  for (std::size_t k = 5; k < c.state.size(); ++k)
+    EXPECT_NEAR(margin(k) / (0.5 * c.state.diameter[k]), base, 1e-9) << k;
+
+  c.lists.rebuild(c.state, c.grid, false);
+  const auto held = c.taken();
+  for (std::size_t j = 0; j < c.state.size(); ++j)
+    for (std::size_t i = 0; i < j; ++i)
+      if (close(c, i, j)) {
+        EXPECT_EQ(held.count({i, j}), 1u) << i << " " << j;
+      }
+
+  // Grain 0 (twice the base now) may travel 1.5 times the base margin, grain 1 may not.
+  c.lists.x0 = c.state.x;
+  c.lists.y0 = c.state.y;
+  const double r = 0.5 * c.state.diameter[0];  // grain 1's too
+  c.state.x[0] += 1.5 * base * r;
+  EXPECT_FALSE(c.lists.moved_beyond_margin(c.state));
+  c.state.x[1] += 1.5 * base * r;
+  EXPECT_TRUE(c.lists.moved_beyond_margin(c.state));
+}
+
 }  // namespace
 }  // namespace sedem

@@ -125,6 +125,21 @@ bool CandidateLists::moved_beyond_margin(const EngineState& s) {
   return n > 1 && top[top.size() - 1] + top[top.size() - 2] >= 0;
 }
 
+void CandidateLists::size_margins(const EngineState& s) {
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const double r = 0.5 * s.diameter[k];
+    const double own = (search[k] - r * range) / r;  // radii
+    const double dx = s.x[k] - x0[k], dy = s.y[k] - y0[k];
+    const double used = std::sqrt(dx * dx + dy * dy) / (r * own);
+    double next = own;
+    if (used > kWidenAbove)
+      next = std::min(kWidestMargin * margin, 2 * own);
+    else if (used < kNarrowBelow)
+      next = std::max(margin, 0.5 * own);
+    search[k] = r * (range + next);
+  }
+}
+
 std::size_t CandidateLists::bytes() const {
   std::size_t b = 0;
   for (const auto& l : local_lists_) b += l.capacity() * 4;

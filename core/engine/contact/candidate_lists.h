@@ -38,6 +38,14 @@ class CandidateLists {
   // Valid while no particle has moved more than half the margin the radii carry beyond the
   // interaction range: see the comment at its definition.
   bool moved_beyond_margin(const EngineState& s);
+  // Margins per grain (margin_per_grain), sized before a build from how much of its margin each
+  // grain used since the last one: doubled (up to kWidestMargin times `margin`) past
+  // kWidenAbove of it, halved (down to `margin`) below kNarrowBelow. Grains falling at their
+  // step's full pace use their margin in a few steps while most barely touch theirs, and
+  // wider margins for all cost more in the lists than the builds they save. Needs the build
+  // positions of every particle of the state.
+  void size_margins(const EngineState& s);
+  static constexpr double kWidenAbove = 0.35, kNarrowBelow = 0.15, kWidestMargin = 8;
   // The lists: row k lists the partners of particle_of(k). The first grid_rows rows follow
   // the grid's order (a same-level pair in both rows, a cross-level pair in the finer side's);
   // the rest are extend()'s, row k particle k's.
@@ -53,8 +61,9 @@ class CandidateLists {
   std::vector<double> search;  // search radius: radius + lubrication reach + skins + margin
   std::vector<double> x0, y0;  // positions when the lists were built
   double margin = 2;           // of the search radii, in radii
-  // Carried steps (integrator.carried_fraction): a grain's margin is its search radius beyond the
-  // interaction range (`range` radii), margin times its carrier's radius, not its own.
+  // A grain's margin is its search radius beyond the interaction range (`range` radii): with
+  // local steps, sized by size_margins, or with carried steps (integrator.carried_fraction)
+  // margin times its carrier's radius, not its own. Otherwise `margin` radii for every grain.
   bool margin_per_grain = false;
   double range = 1;
   // The margin grain i's search radius holds (the interaction range left out).

@@ -109,7 +109,10 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
   pass.configure(model, threads);
   lists.configure(threads);
   carried = local && setup.integrator.carried_fraction > 0 && model.contact;
-  lists.margin_per_grain = carried;
+  // Local steps size each grain's margin by its pace (CandidateLists::size_margins): the whole
+  // test of sample 5 at 10^5 grains built the lists 29 % less often. Carried steps size them by
+  // the carriers.
+  lists.margin_per_grain = local && model.contact;
   lists.range = 1 + reach + model.skin;
   if (carried) allowance.assign(n, HUGE_VAL);
 
@@ -175,6 +178,9 @@ void EngineParts::extend_lists() {
 }
 
 bool EngineParts::resort_and_rebuild_lists() {
+  // Before a re-sort moves the state away from the build positions' order.
+  if (lists.margin_per_grain && !carried && lists.x0.size() == state.size())
+    lists.size_margins(state);
   const bool resorted = resort.due(stats.steps);
   if (resorted) resort.run(state, lists.search, grid, stats.steps);
   rebuild_lists();
