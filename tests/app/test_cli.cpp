@@ -152,12 +152,17 @@ TEST(Cli, TwoSigtermsStillStopCleanly) {
 }
 
 TEST(Cli, ASigtermDuringTheSetUpStopsCleanlyToo) {
-  // Sent while the 200 000 particles are being placed (or, on a fast machine, just after):
-  // either way a record that says interrupted and a checkpoint to go on from, never exit 143.
+  // Sent as soon as the run catches SIGTERM (its set-up's first instruction), while the scene is
+  // read and the 200 000 particles placed (or, on a fast machine, just after): either way a
+  // record that says interrupted and a checkpoint to go on from, never exit 143. A fixed delay
+  // instead sent it, on a loaded machine, before the program had even started.
   fs::path out;
+  const std::string when_caught =
+      "for i in $(seq 1000); do m=$(awk '/^SigCgt/ {print $2}' /proc/$pid/status 2>/dev/null); "
+      "[ -n \"$m\" ] && [ $((0x$m & 0x4000)) -ne 0 ] && break; sleep 0.01; done; ";
   auto r = stopped_run("sigterm_setup",
-                       " --set sample.simulated_count=200000 --set output.particles=false", 0.4,
-                       "kill -TERM $pid;", out);
+                       " --set sample.simulated_count=200000 --set output.particles=false", 0,
+                       when_caught + "kill -TERM $pid;", out);
   EXPECT_EQ(r.status, 130) << r.output;
   EXPECT_EQ(read_json(out / "run.json")["status"], "interrupted");
   EXPECT_TRUE(fs::exists(out / "checkpoint.bin"));
