@@ -33,4 +33,13 @@ inline CommandResult run_sedem(const std::string& args) {
   return run_command(std::string(SEDEM_EXE) + " " + args);
 }
 
+// Shell commands that wait (at most 10 s) until process $pid catches SIGTERM, i.e. until a
+// run's set-up has begun: a signal counted from the spawn instead came, on a loaded machine,
+// before the program had even started, and its default action killed it (exit 143).
+inline std::string until_sigterm_caught() {
+  return "for i in $(seq 1000); do m=$(awk '/^SigCgt/ {print $2}' /proc/$pid/status "
+         "2>/dev/null); [ -n \"$m\" ] && [ $((0x$m & 0x4000)) -ne 0 ] && break; sleep 0.01; "
+         "done; ";
+}
+
 }  // namespace sedem::test

@@ -103,15 +103,16 @@ TEST(Cli, UnwritableOutputFolderFails) {
 }
 
 // A long run of the demo into kOut/name with `sets`, sent `signals` (shell commands on $pid)
-// after `seconds`: its folder, and the run's exit status and output.
+// `seconds` after it catches SIGTERM (the first instruction of its set-up): its folder, and the
+// run's exit status and output.
 test::CommandResult stopped_run(const std::string& name, const std::string& sets, double seconds,
                                 const std::string& signals, fs::path& out) {
   out = kOut / name;
   fs::remove_all(out);
   return test::run_sedem("run " + kDemo + " --out " + out.string() +
                          " --set run.end_time_s=1e6 --set output.frames=false" + sets +
-                         " --quiet 2>&1 & pid=$!; sleep " + std::to_string(seconds) + "; " +
-                         signals + " wait $pid");
+                         " --quiet 2>&1 & pid=$!; " + test::until_sigterm_caught() + "sleep " +
+                         std::to_string(seconds) + "; " + signals + " wait $pid");
 }
 
 TEST(Cli, InterruptedRunSaysSoAndKeepsWhatItWrote) {
@@ -152,17 +153,13 @@ TEST(Cli, TwoSigtermsStillStopCleanly) {
 }
 
 TEST(Cli, ASigtermDuringTheSetUpStopsCleanlyToo) {
-  // Sent as soon as the run catches SIGTERM (its set-up's first instruction), while the scene is
-  // read and the 200 000 particles placed (or, on a fast machine, just after): either way a
-  // record that says interrupted and a checkpoint to go on from, never exit 143. A fixed delay
-  // instead sent it, on a loaded machine, before the program had even started.
+  // Sent as soon as the run catches SIGTERM, while the scene is read and the 200 000 particles
+  // placed (or, on a fast machine, just after): either way a record that says interrupted and a
+  // checkpoint to go on from, never exit 143.
   fs::path out;
-  const std::string when_caught =
-      "for i in $(seq 1000); do m=$(awk '/^SigCgt/ {print $2}' /proc/$pid/status 2>/dev/null); "
-      "[ -n \"$m\" ] && [ $((0x$m & 0x4000)) -ne 0 ] && break; sleep 0.01; done; ";
   auto r = stopped_run("sigterm_setup",
                        " --set sample.simulated_count=200000 --set output.particles=false", 0,
-                       when_caught + "kill -TERM $pid;", out);
+                       "kill -TERM $pid;", out);
   EXPECT_EQ(r.status, 130) << r.output;
   EXPECT_EQ(read_json(out / "run.json")["status"], "interrupted");
   EXPECT_TRUE(fs::exists(out / "checkpoint.bin"));

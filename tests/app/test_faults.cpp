@@ -155,8 +155,9 @@ TEST(Faults, ACheckpointOfAnotherRunIsRefused) {
       " & pid=$!; for i in $(seq 400); do grep -qs '\"sample.seed\": 2' " + dir.string() +
       "/run.json && break; sleep 0.05; done; kill -KILL $pid; wait $pid");
   ASSERT_EQ(other.status, 137) << other.output;
-  auto again = test::run_sedem("run --resume " + dir.string() +
-                               " 2>&1 & pid=$!; sleep 1.5; kill -TERM $pid; wait $pid");
+  auto again =
+      test::run_sedem("run --resume " + dir.string() + " 2>&1 & pid=$!; " +
+                      test::until_sigterm_caught() + "sleep 1.5; kill -TERM $pid; wait $pid");
   EXPECT_EQ(again.status, 130) << again.output;
   EXPECT_NE(again.output.find("starting it again from the beginning"), std::string::npos)
       << again.output;
@@ -183,7 +184,8 @@ TEST(Faults, AFolderOfARunKilledBeforeItsFirstCheckpointIsTakenOver) {
   // One that was stopped cleanly (interrupted, with a checkpoint) is kept: resume or
   // --overwrite.
   auto stopped = test::run_sedem("run " + kDemo + kSlow + " --overwrite --out " + dir.string() +
-                                 " & pid=$!; sleep 1.5; kill -TERM $pid; wait $pid");
+                                 " & pid=$!; " + test::until_sigterm_caught() +
+                                 "sleep 1.5; kill -TERM $pid; wait $pid");
   ASSERT_EQ(stopped.status, 130) << stopped.output;
   auto refused = test::run_sedem("run " + kDemo + kShort + " --out " + dir.string());
   EXPECT_EQ(refused.status, 3) << refused.output;
