@@ -104,9 +104,9 @@ void LocalStepper::load(std::istream& in) {
 // inside its box, no coasting grain's window has ended, and only grains that the common step
 // handles (members, and settled grains beside frozen ones) hold overlapping boxes. One
 // exception: a grain synced ahead of the members in a step a joining grain then shortened
-// keeps its old box too, where a grain synced after it may have passed since. Also: the
-// members' copies of their tracks match the tracks, and a member's weight lies in the voidage
-// cell it is in.
+// keeps its old box too, where a grain synced after it may have passed since (but no coasting
+// grain's disc overlaps another's). Also: the members' copies of their tracks match the tracks,
+// and a member's weight lies in the voidage cell it is in.
 std::string LocalStepper::violation() const {
   if (member_track_.size() != e_.state.size())
     return std::to_string(member_track_.size()) + " copies of tracks for " +
@@ -168,6 +168,12 @@ std::string LocalStepper::violation() const {
                             !(a == GrainKind::moving && b == GrainKind::settled));
       if (!handled && found.empty())
         found = "the boxes of " + name(id) + " and " + name(j) + " overlap";
+      // Whatever their boxes, a coasting grain touches nothing it does not pass.
+      if (found.empty() && !passing && (a == GrainKind::coasting || b == GrainKind::coasting)) {
+        const FreeFlight::Point p = where(id), q = where(j);
+        if (std::hypot(p.x - q.x, p.y - q.y) < 0.5 * (s.diameter[id] + s.diameter[j]))
+          found = name(id) + " and " + name(j) + " overlap";
+      }
     });
     if (!found.empty()) return found;
   }
