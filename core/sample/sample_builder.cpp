@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "core/sample/grading_curve.h"
+#include "core/sample/memory_order.h"
 #include "core/sample/placement.h"
 #include "core/sample/sample_checks.h"
 #include "core/sample/size_classes.h"
@@ -58,6 +59,7 @@ Sample build_sample(const SampleSetup& setup) {
     }
   }
   place_particles(p, setup.cylinder, setup.sample.placement, std::uint64_t(setup.sample.seed));
+  order_for_memory(p, setup.cylinder);
   sample.area_fraction = area_fraction(p, setup.cylinder);
   return sample;
 }

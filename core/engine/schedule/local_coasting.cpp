@@ -57,18 +57,20 @@ bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p,
     const FreeFlight::Range g = f.sweep(w);
     return Box{g.x0 - pad, g.x1 + pad, g.y0 - pad, g.y1 + pad};
   };
-  auto take = [&](double w) {
+  // `swept`: the window's box, when it was computed already (sweeps cost an exponential or
+  // three, and most windows fit at the first length tried).
+  auto take = [&](double w, const Box* swept) {
     if (!commit) return true;
     track_[id] = {f, t, t + w, track_[id].deposit_cell};
     // Sixty-four grains share a line of kind_, and lanes on two threads sync grains of
     // neighbouring ids: a grain already coasting is not written again.
     if (kind_[id] != GrainKind::coasting) kind_[id] = GrainKind::coasting;
-    if (e_.model.contact) hold_coasting_box(id, box(w));
+    if (e_.model.contact) hold_coasting_box(id, swept ? *swept : box(w));
     push_sync(lane, t + w, id);
     ++lane.windows;
     return true;
   };
-  if (!e_.model.contact) return take(window);
+  if (!e_.model.contact) return take(window, nullptr);
 
   const double speed = f.rate > 0 ? std::max(std::hypot(f.vx, f.vy), terminal)
                                   : std::hypot(f.vx, f.vy) + terminal * window;
@@ -80,11 +82,12 @@ bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p,
   const double shortest =
       speed > 0 ? std::min(window, e_.setup.integrator.crossing_fraction * r / speed) : window;
   lane.near.clear();
-  boxes_.overlapping(box(window), id, [&](std::uint32_t j) {
+  const Box longest = box(window);
+  boxes_.overlapping(longest, id, [&](std::uint32_t j) {
     if (!passes(j)) lane.near.push_back(j);
   });
   for (double w = window; w >= shortest; w *= 0.5) {
-    const Box b = box(w);
+    const Box b = w == window ? longest : box(w);
     if (b.x0 <= -hw || b.x1 >= hw || b.y0 <= 0) continue;
     bool clear = true;
     for (std::uint32_t j : lane.near)
@@ -92,7 +95,7 @@ bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p,
         clear = false;
         break;
       }
-    if (clear) return take(w);
+    if (clear) return take(w, &b);
   }
   if (needed) *needed = box(shortest);
   return false;
