@@ -6,8 +6,9 @@
 namespace sedem {
 
 // Renumbers the particles of each size class along a Z-order curve of their positions
-// (cells of the mean spacing), keeping the classes in their order; ids become the new
-// indices. Same positions, same order: a run is as reproducible as before.
+// (cells of the mean spacing), the classes by their index (build_sample deals them out in
+// that order, so they keep it); ids become the new indices. Same positions, same order: a
+// run is as reproducible as before.
 //
 // Why: the local stepper keeps each grain's state by its index. Grains of one size coast on
 // windows of one length and come up for their syncs together, in index order, so a class's
