@@ -57,20 +57,20 @@ bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p,
     const FreeFlight::Range g = f.sweep(w);
     return Box{g.x0 - pad, g.x1 + pad, g.y0 - pad, g.y1 + pad};
   };
-  // `swept`: the window's box, when it was computed already (sweeps cost an exponential or
-  // three, and most windows fit at the first length tried).
-  auto take = [&](double w, const Box* swept) {
+  // `swept`: the window's box, computed once by the caller (a sweep costs an exponential or
+  // three); without contacts no box is held.
+  auto take = [&](double w, const Box& swept) {
     if (!commit) return true;
     track_[id] = {f, t, t + w, track_[id].deposit_cell};
     // Sixty-four grains share a line of kind_, and lanes on two threads sync grains of
     // neighbouring ids: a grain already coasting is not written again.
     if (kind_[id] != GrainKind::coasting) kind_[id] = GrainKind::coasting;
-    if (e_.model.contact) hold_coasting_box(id, swept ? *swept : box(w));
+    if (e_.model.contact) hold_coasting_box(id, swept);
     push_sync(lane, t + w, id);
     ++lane.windows;
     return true;
   };
-  if (!e_.model.contact) return take(window, nullptr);
+  if (!e_.model.contact) return take(window, Box{});
 
   const double speed = f.rate > 0 ? std::max(std::hypot(f.vx, f.vy), terminal)
                                   : std::hypot(f.vx, f.vy) + terminal * window;
@@ -95,7 +95,7 @@ bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p,
         clear = false;
         break;
       }
-    if (clear) return take(w, &b);
+    if (clear) return take(w, b);
   }
   if (needed) *needed = box(shortest);
   return false;
