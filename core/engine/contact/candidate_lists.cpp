@@ -27,6 +27,9 @@ void CandidateLists::rebuild_at_build_positions(const EngineState& s, NeighbourG
   build(grid, n, x0.data(), y0.data(), search.data(), frozen_aware ? s.frozen.data() : nullptr);
   grid_rows = n;
   stale = false;
+  double widest = 0;
+  for (std::size_t i = 0; i < n; ++i) widest = std::max(widest, search[i]);
+  appended_.reset(n, widest > 0 ? 2 * widest : 1);
   extend(s, grid);
 }
 
@@ -42,9 +45,10 @@ void CandidateLists::extend(const EngineState& s, const NeighbourGrid& grid) {
       if (dx * dx + dy * dy < reach * reach) list_.push_back(std::uint32_t(m));
     };
     // The grid holds the particles of its rows, at their build positions; those appended
-    // since are looked at one by one (a few, between two builds).
+    // since are in appended_.
     grid.for_each_near(bx[k], by[k], radius[k], bx, by, take);
-    for (std::size_t m = grid_rows; m < k; ++m) take(m);
+    appended_.for_each_near(bx[k], by[k], radius[k], take);
+    appended_.add(k, bx[k], by[k], radius[k]);
     list_start_.push_back(std::uint32_t(list_.size()));
   }
 }
@@ -144,7 +148,7 @@ std::size_t CandidateLists::bytes() const {
   std::size_t b = 0;
   for (const auto& l : local_lists_) b += l.capacity() * 4;
   b += (list_start_.capacity() + list_.capacity()) * 4;
-  return b;
+  return b + appended_.bytes();
 }
 
 }  // namespace sedem

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/engine/contact/appended_cells.h"
 #include "core/engine/contact/neighbour_grid.h"
 #include "core/engine/state/engine_state.h"
 
@@ -81,6 +82,7 @@ class CandidateLists {
   std::vector<double> top_excess_;  // per thread: the two largest moves beyond the margin
   std::vector<std::vector<std::uint32_t>> local_lists_;
   std::vector<std::uint32_t> list_start_, list_;
+  AppendedCells appended_;  // the rows extend() added since the last build
 };
 
 }  // namespace sedem
