@@ -183,4 +183,19 @@ TEST(ScaleBench, WatchingEveryStepChangesNothing) {
 }
 
 }  // namespace
+// A short run that no reading reaches stops at once unless asked to run to its end time; then it
+// takes the steps there and the readings stay empty.
+TEST(ScaleBench, RunsToTheEndTimeWhenAsked) {
+  const Scene scene = load_scene(std::string(SEDEM_SOURCE_DIR) + "/scenes/demo.toml",
+                                 {"sample.simulated_count=300", "run.end_time_s=5",
+                                  "instruments.hydrometer.times_min=[0.5, 1.5]"});
+  const SimulationRun to_reading = simulate(scene, build_sample(sample_setup(scene)));
+  EXPECT_EQ(to_reading.simulated_seconds, 0);
+  EXPECT_EQ(to_reading.stats.steps, 0);
+  const SimulationRun to_end = simulate(scene, build_sample(sample_setup(scene)), false, {}, true);
+  EXPECT_DOUBLE_EQ(to_end.simulated_seconds, 5);
+  EXPECT_GT(to_end.stats.steps, 0);
+  EXPECT_TRUE(std::isnan(bench::test_error(to_end.results, "hydrometer")));
+}
+
 }  // namespace sedem

@@ -26,8 +26,8 @@ std::vector<std::size_t> scanned(const Added& a, std::size_t first, double x, do
   return out;
 }
 
-std::vector<std::size_t> found(AppendedCells& cells, const Added& a, std::size_t first,
-                               double x, double y, double reach) {
+std::vector<std::size_t> found(AppendedCells& cells, const Added& a, std::size_t first, double x,
+                               double y, double reach) {
   std::vector<std::size_t> out;
   cells.for_each_near(x, y, reach, [&](std::size_t m) {
     const std::size_t k = m - first;

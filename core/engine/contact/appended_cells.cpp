@@ -18,7 +18,8 @@ std::int64_t AppendedCells::cell_of(double v) const {
 }
 
 std::size_t AppendedCells::bucket(std::int64_t cx, std::int64_t cy) {
-  const std::uint64_t h = std::uint64_t(cx) * 0x9E3779B97F4A7C15ull ^ std::uint64_t(cy) * 0xC2B2AE3D27D4EB4Full;
+  const std::uint64_t h =
+      std::uint64_t(cx) * 0x9E3779B97F4A7C15ull ^ std::uint64_t(cy) * 0xC2B2AE3D27D4EB4Full;
   return std::size_t(h >> 51);  // the top 13 bits: kBuckets
 }
 

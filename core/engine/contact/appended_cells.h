@@ -23,7 +23,9 @@ class AppendedCells {
   // tests the distance).
   template <class Visit>
   void for_each_near(double x, double y, double reach, Visit&& visit);
-  std::size_t bytes() const { return (head_.capacity() + next_.capacity() + found_.capacity()) * 4; }
+  std::size_t bytes() const {
+    return (head_.capacity() + next_.capacity() + found_.capacity()) * 4;
+  }
 
  private:
   static constexpr std::uint32_t kNone = UINT32_MAX;
