@@ -38,6 +38,9 @@ int main(int argc, char** argv) {
                  "Simulated time, s (default: the scene's, 86400); the run stops at the last "
                  "reading before it")
       ->check(CLI::PositiveNumber);
+  cli.add_flag("--to-end-time", options.to_end_time,
+               "Run to the end time even past the last reading (the first seconds at a large "
+               "count, where no reading comes before the end)");
   cli.add_option("--set", options.sets, "A scene key set in every run, key=value (repeatable)");
   cli.add_option("--threads", options.threads, "integrator.threads (default: the scene's)")
       ->check(CLI::NonNegativeNumber);

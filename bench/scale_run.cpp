@@ -239,9 +239,10 @@ std::vector<ScaleRow> run_scale_bench(const ScaleOptions& options, std::FILE* ta
         r.sample_build_s =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         SpanTally tally;
-        const SimulationRun run =
-            simulate(scene, std::move(sample), false,
-                     [&](double t, const EngineStats& stats) { tally.after_step(t, stats); });
+        const SimulationRun run = simulate(
+            scene, std::move(sample), false,
+            [&](double t, const EngineStats& stats) { tally.after_step(t, stats); },
+            options.to_end_time);
         r.spans = tally.finish(run.simulated_seconds, run.wall_seconds);
         r.wall_s = run.wall_seconds;
         r.particles = run.particles;

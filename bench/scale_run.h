@@ -17,6 +17,7 @@ struct ScaleOptions {
   std::vector<std::string> scenes;   // scene files, one sample each
   std::vector<double> counts;        // sample.simulated_count of the runs
   std::optional<double> end_time_s;  // run.end_time_s; unset: the scene's
+  bool to_end_time = false;          // run to the end time, not to the last reading before it
   std::vector<std::string> sets;     // key=value set in every run
   int threads = 0;                   // integrator.threads; 0: the scene's
   std::string label;                 // the CSV's label column (which build, which change)

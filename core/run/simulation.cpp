@@ -218,14 +218,32 @@ void Simulation::run_here(const StepWatch& after_step) {
   peak_engine_bytes_ = std::max(peak_engine_bytes_, engine_->bytes());
 }
 
+namespace {
+
+// Asks for the engine at one time and reads nothing: a run to its end time with no reading there.
+class EndTime final : public Observer {
+ public:
+  explicit EndTime(double t) : t_(t) {}
+  std::string name() const override { return "end time"; }
+  std::vector<double> wanted_times() const override { return {t_}; }
+  void observe(double, const Particles&) override {}
+
+ private:
+  double t_;
+};
+
+}  // namespace
+
 SimulationRun simulate(const Scene& scene, Sample sample, bool keep_last,
-                       const Simulation::StepWatch& after_step) {
+                       const Simulation::StepWatch& after_step, bool to_end_time) {
   const auto start = std::chrono::steady_clock::now();
   SimulationRun run;
   run.particles = sample.particles.size();
   Simulation simulation(scene, std::move(sample));
   InstrumentObserver instruments(test_setup(scene), simulation.sample());
   simulation.watch(instruments);
+  EndTime end(scene.end_time);
+  if (to_end_time) simulation.watch(end);
   simulation.run_here(after_step);
   run.results = instruments.results();
   run.stats = simulation.stats();

@@ -126,8 +126,10 @@ struct SimulationRun {
 };
 
 // The instruments read the engine's particles in place. `keep_last` copies them into
-// SimulationRun::last at the end; `after_step` sees every step (Simulation::run_here).
+// SimulationRun::last at the end; `after_step` sees every step (Simulation::run_here). The run
+// ends at the last reading (nothing later is read), or with `to_end_time` at the scene's end
+// time: a short run that no reading reaches (the first steps at a large count, measured).
 SimulationRun simulate(const Scene& scene, Sample sample, bool keep_last = false,
-                       const Simulation::StepWatch& after_step = {});
+                       const Simulation::StepWatch& after_step = {}, bool to_end_time = false);
 
 }  // namespace sedem
