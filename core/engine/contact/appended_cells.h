@@ -2,8 +2,8 @@
 
 // The particles appended to the candidate lists since their last build, hashed by cell, so that
 // the row of a newly appended particle need not look at every other one: at a million grains
-// thousands join the members between two builds, and looking at each pair of them was a tenth
-// of the run. Its answer is the pairwise scan's to the bit: candidates in increasing index.
+// thousands join the members between two builds, and looking at each pair of them was 8 % of
+// the run. Its answer is the pairwise scan's to the bit: candidates in increasing index.
 
 #include <cstddef>
 #include <cstdint>
