@@ -18,8 +18,8 @@ namespace {
 // The last byte is the format's version: 2 keeps the candidate lists' rows in the grid's order;
 // 3 the stats of what set the step and of the carried sub-steps (EngineStats is written whole);
 // 4 members' boxes with an allowance of 2 radii (a box of 3 read back as 2 would resume,
-// safely, as neither version's run).
-constexpr char kMagic[8] = {'S', 'E', 'D', 'E', 'M', 'C', 'K', '4'};
+// safely, as neither version's run); 5 the candidate lists' widenings since their build.
+constexpr char kMagic[8] = {'S', 'E', 'D', 'E', 'M', 'C', 'K', '5'};
 
 // The particle state and the lists' build in checkpoint order, for saving and loading alike
 // (`Parts`: EngineParts, const when saving).
@@ -166,6 +166,7 @@ void Engine::save_checkpoint(std::ostream& out) const {
   write_value(out, e.facts.min_contact_mass);
   checkpoint_fields(
       e, [&](const auto& v) { write_vector(out, v); }, [&](const auto& v) { write_value(out, v); });
+  write_vector(out, e.lists.widenings);
   const auto springs = e.springs.sorted_entries();
   const std::uint64_t count = springs.size();
   write_value(out, count);
@@ -231,6 +232,8 @@ void Engine::load_checkpoint(std::istream& in, const std::string& path) {
       if (!(e.state.diameter[i] > 0) || !(e.state.weight[i] >= 0) || e.state.frozen[i] > 1)
         bad("particle " + std::to_string(i) + " has a bad size, weight or frozen flag");
     if (e.resort.done_at < 0 || e.resort.done_at > e.stats.steps) bad("resort step out of range");
+    if (!e.lists.widenings_fit(n))
+      bad("a widening of the candidate lists names no particle or no wider radius");
     if (!e.lists.stale && e.lists.grid_rows > n)
       bad("the candidate lists' " + std::to_string(e.lists.grid_rows) + " rows exceed the " +
           std::to_string(n) + " particles the state holds");
@@ -249,6 +252,16 @@ void Engine::load_checkpoint(std::istream& in, const std::string& path) {
   read_value(in, e.facts.min_contact_mass);
   checkpoint_fields(
       e, [&](auto& v) { read_vector(in, v); }, [&](auto& v) { read_value(in, v); });
+  {
+    const auto here = in.tellg();
+    in.seekg(0, std::ios::end);
+    const auto end = in.tellg();
+    in.seekg(here);
+    const std::uint64_t room =
+        here < 0 || end < here ? 0 : std::uint64_t(end - here) / sizeof(CandidateLists::Widening);
+    read_vector_upto(in, e.lists.widenings, room);
+    if (e.lists.stale) e.lists.widenings.clear();  // the next build starts afresh
+  }
   std::uint64_t count = 0;
   read_value(in, count);
   validate_loaded_state(count);

@@ -8,12 +8,13 @@ namespace sedem {
 // What the engine did so far: counts that benchmarks, progress and run.json report.
 struct EngineStats {
   std::int64_t steps = 0;
-  double particle_steps = 0;     // sum over steps of the particles integrated (not frozen)
-  double last_step = 0;          // s
-  std::size_t contacts = 0;      // particles touching something at the last step
-  std::size_t frozen = 0;        // particles frozen in the bed
-  double max_overlap_ratio = 0;  // largest overlap / smaller radius seen so far
-  std::int64_t list_builds = 0;  // candidate lists built (Verlet rebuilds), the first included
+  double particle_steps = 0;      // sum over steps of the particles integrated (not frozen)
+  double last_step = 0;           // s
+  std::size_t contacts = 0;       // particles touching something at the last step
+  std::size_t frozen = 0;         // particles frozen in the bed
+  double max_overlap_ratio = 0;   // largest overlap / smaller radius seen so far
+  std::int64_t list_builds = 0;   // candidate lists built (Verlet rebuilds), the first included
+  std::int64_t widened_rows = 0;  // rows added for grains whose search widened (carried steps)
   // Local time stepping: coasting windows taken, and grains that left or joined the common step.
   std::int64_t windows = 0, engaged = 0, released = 0;
   std::size_t members = 0;  // grains on the common step at the last step (frozen included)

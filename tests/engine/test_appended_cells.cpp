@@ -42,7 +42,7 @@ TEST(AppendedCells, FindWhatThePairwiseScanFindsInItsOrder) {
   for (const double cell : {1e-6, 80e-6, 1e-2}) {  // far smaller, about, far larger than a reach
     AppendedCells cells;
     const std::size_t first = 1000;
-    cells.reset(first, cell);
+    cells.reset(cell);
     Added a;
     std::size_t queries = 0, with_partners = 0;
     for (std::size_t k = 0; k < 3000; ++k) {
@@ -65,19 +65,37 @@ TEST(AppendedCells, FindWhatThePairwiseScanFindsInItsOrder) {
 
 TEST(AppendedCells, ResetForgetsWhatWasAdded) {
   AppendedCells cells;
-  cells.reset(10, 1e-4);
+  cells.reset(1e-4);
   cells.add(10, 0, 0, 1e-5);
   cells.add(11, 1e-6, 0, 1e-5);
   std::vector<std::size_t> seen;
   cells.for_each_near(0, 0, 1e-5, [&](std::size_t m) { seen.push_back(m); });
   EXPECT_EQ(seen, (std::vector<std::size_t>{10, 11}));
-  cells.reset(20, 1e-4);
+  cells.reset(1e-4);
   seen.clear();
   cells.for_each_near(0, 0, 1e-5, [&](std::size_t m) { seen.push_back(m); });
   EXPECT_TRUE(seen.empty());
   cells.add(20, 0, 0, 1e-5);
   cells.for_each_near(0, 0, 1e-5, [&](std::size_t m) { seen.push_back(m); });
   EXPECT_EQ(seen, (std::vector<std::size_t>{20}));
+}
+
+// A grain of the grid's rows whose search widened is added after the appended ones, and may be
+// added again: it comes back once, in index order, from the hashed cells and from the look at
+// every entry alike.
+TEST(AppendedCells, ParticlesAddedOutOfOrderOrTwiceComeBackOnceInOrder) {
+  for (const double cell : {1e-5, 1.0}) {  // a block of many cells (every entry), or one cell
+    AppendedCells cells;
+    cells.reset(cell);
+    cells.add(30, 0, 0, 1e-5);
+    cells.add(31, 2e-6, 0, 1e-5);
+    cells.add(7, 1e-6, 1e-6, 1e-5);
+    cells.add(7, 1e-6, 1e-6, 3e-5);
+    cells.add(2, -1e-6, 0, 1e-5);
+    std::vector<std::size_t> seen;
+    cells.for_each_near(0, 0, 1e-5, [&](std::size_t m) { seen.push_back(m); });
+    EXPECT_EQ(seen, (std::vector<std::size_t>{2, 7, 30, 31})) << cell;
+  }
 }
 
 }  // namespace

@@ -69,6 +69,28 @@ bool close(const Crowd& c, std::size_t i, std::size_t j) {
   return std::hypot(c.lists.x0[i] - c.lists.x0[j], c.lists.y0[i] - c.lists.y0[j]) < reach;
 }
 
+// Expects every close pair held once and no other pair (nor two frozen grains: a bed costs
+// nothing). Returns how many close pairs there are, and how many with a particle from `later` on.
+std::pair<std::size_t, std::size_t> expect_close_pairs_held_once(const Crowd& c,
+                                                                 std::size_t later) {
+  const auto held = c.taken();
+  std::size_t pairs = 0, with_later = 0;
+  for (std::size_t j = 0; j < c.state.size(); ++j)
+    for (std::size_t i = 0; i < j; ++i) {
+      const bool both_frozen = c.state.frozen[i] && c.state.frozen[j];
+      const auto it = held.find({i, j});
+      const int times = it == held.end() ? 0 : it->second;
+      if (!close(c, i, j) || both_frozen) {
+        EXPECT_EQ(times, 0) << i << " " << j;
+        continue;
+      }
+      ++pairs;
+      with_later += j >= later;
+      EXPECT_EQ(times, 1) << i << " " << j;
+    }
+  return {pairs, with_later};
+}
+
 TEST(CandidateLists, AppendedParticlesHoldEachClosePairOnce) {
   Crowd c;
   for (int i = 0; i < 1500; ++i) c.append(i % 7 == 0);
@@ -78,21 +100,7 @@ TEST(CandidateLists, AppendedParticlesHoldEachClosePairOnce) {
   ASSERT_EQ(c.lists.rows(), c.state.size());
   EXPECT_EQ(c.lists.grid_rows, 1500u);
 
-  const auto held = c.taken();
-  std::size_t pairs = 0, with_appended = 0;
-  for (std::size_t j = 0; j < c.state.size(); ++j)
-    for (std::size_t i = 0; i < j; ++i) {
-      const bool both_frozen = c.state.frozen[i] && c.state.frozen[j];
-      const auto it = held.find({i, j});
-      const int times = it == held.end() ? 0 : it->second;
-      if (!close(c, i, j) || both_frozen) {
-        EXPECT_EQ(times, 0) << i << " " << j;  // only close pairs, and a bed costs nothing
-        continue;
-      }
-      ++pairs;
-      with_appended += j >= 1500;
-      EXPECT_EQ(times, 1) << i << " " << j;
-    }
+  const auto [pairs, with_appended] = expect_close_pairs_held_once(c, 1500);
   EXPECT_GT(pairs, 300u);
   EXPECT_GT(with_appended, 50u);
 }
@@ -182,6 +190,86 @@ TEST(CandidateLists, MarginsFollowEachGrainsPace) {
   EXPECT_FALSE(c.lists.moved_beyond_margin(c.state));
   c.state.x[1] += 1.5 * base * r;
   EXPECT_TRUE(c.lists.moved_beyond_margin(c.state));
+}
+
+// Widened rows (carried steps: a grain picked up by a coarse one needs a wider search): after
+// widenings of grains of the grid's rows and of appended ones, some twice, between appends, the
+// lists hold every pair within the radii now exactly once, as lists built with them would.
+// A resumed run (the grid's rows from the build's radii, then the appends and widenings again in
+// their order) gets the same rows to the entry.
+TEST(CandidateLists, WidenedRowsHoldEachClosePairOnceAndReplayFromACheckpoint) {
+  Crowd c;
+  for (int i = 0; i < 1200; ++i) c.append(i % 7 == 0);
+  c.lists.rebuild_at_build_positions(c.state, c.grid, true);
+  std::uniform_int_distribution<int> pick(0, 1 << 30);
+  std::size_t widened = 0;
+  for (int batch = 0; batch < 6; ++batch) {
+    for (int i = 0; i < 40; ++i) c.append(i % 5 == 0);
+    c.lists.extend(c.state, c.grid);
+    for (int w = 0; w < 25; ++w) {
+      const std::size_t k = std::size_t(pick(c.rng)) % c.state.size();
+      // To about a coarse grain's reach: many partners the old radius did not hold.
+      c.lists.widen(c.grid, k, c.lists.search[k] + 20e-6 + 50e-6 * (w % 3));
+      ++widened;
+    }
+    const std::size_t again = std::size_t(pick(c.rng)) % c.state.size();  // twice, some
+    c.lists.widen(c.grid, again, c.lists.search[again] * 1.5);
+    c.lists.widen(c.grid, again, c.lists.search[again]);  // no wider: nothing
+    ++widened;
+  }
+  ASSERT_EQ(c.lists.widenings.size(), widened);
+  ASSERT_EQ(c.lists.rows(), c.state.size() + widened);
+  ASSERT_EQ(c.lists.appended_to(), c.state.size());
+
+  const std::size_t pairs = expect_close_pairs_held_once(c, c.state.size()).first;
+  std::size_t added_by_widening = 0;
+  for (std::size_t k = c.lists.grid_rows; k < c.lists.rows(); ++k)
+    if (c.lists.first_row_from(c.lists.particle_of(k, c.grid)) != k)  // not an appended row
+      added_by_widening += c.lists.list_start()[k + 1] - c.lists.list_start()[k];
+  EXPECT_GT(pairs, 1000u);
+  EXPECT_GT(added_by_widening, 200u);
+
+  // What a checkpoint keeps: the radii now, the build positions, the grid's row count and the
+  // widenings.
+  CandidateLists resumed;
+  resumed.configure(1);
+  resumed.search = c.lists.search;
+  resumed.x0 = c.lists.x0;
+  resumed.y0 = c.lists.y0;
+  resumed.widenings = c.lists.widenings;
+  ASSERT_TRUE(resumed.widenings_fit(c.state.size()));
+  NeighbourGrid grid = c.grid;
+  resumed.rebuild_at_build_positions(c.state, grid, true, c.lists.grid_rows);
+  EXPECT_EQ(resumed.list_start(), c.lists.list_start());
+  EXPECT_EQ(resumed.list(), c.lists.list());
+  EXPECT_EQ(resumed.search, c.lists.search);
+  EXPECT_EQ(resumed.widenings.size(), c.lists.widenings.size());
+  for (std::size_t k = 0; k < resumed.rows(); ++k)
+    EXPECT_EQ(resumed.particle_of(k, grid), c.lists.particle_of(k, c.grid)) << k;
+
+  // A full build forgets them: the radii now are its own.
+  c.lists.rebuild(c.state, c.grid, true);
+  EXPECT_TRUE(c.lists.widenings.empty());
+  EXPECT_EQ(c.lists.rows(), c.state.size());
+}
+
+TEST(CandidateLists, WideningsThatNameNoParticleOrNoWiderRadiusDoNotFit) {
+  CandidateLists lists;
+  const std::size_t n = 10;
+  lists.widenings = {{2, 5, 1e-6, 2e-6}, {7, 8, 1e-6, 3e-6}};
+  EXPECT_TRUE(lists.widenings_fit(n));
+  const CandidateLists::Widening bad[] = {{10, 10, 1e-6, 2e-6},  // no such particle
+                                          {6, 5, 1e-6, 2e-6},    // no row yet
+                                          {2, 11, 1e-6, 2e-6},   // more rows than particles
+                                          {2, 5, 2e-6, 2e-6},    // no wider
+                                          {2, 5, 0, 2e-6},       // no radius
+                                          {2, 5, 1e-6, HUGE_VAL}, {2, 5, std::nan(""), 2e-6}};
+  for (const auto& w : bad) {
+    lists.widenings = {w};
+    EXPECT_FALSE(lists.widenings_fit(n)) << w.particle << " " << w.appended_to << " " << w.from;
+  }
+  lists.widenings = {{2, 8, 1e-6, 2e-6}, {3, 5, 1e-6, 2e-6}};  // fewer rows than before
+  EXPECT_FALSE(lists.widenings_fit(n));
 }
 
 }  // namespace

@@ -5,12 +5,13 @@
 
 namespace sedem {
 
-void AppendedCells::reset(std::size_t first, double cell) {
-  first_ = first;
+void AppendedCells::reset(double cell) {
   inverse_cell_ = 1 / cell;
   widest_ = 0;
+  increasing_ = true;
   head_.assign(kBuckets, kNone);
   next_.clear();
+  id_.clear();
 }
 
 std::int64_t AppendedCells::cell_of(double v) const {
@@ -25,8 +26,10 @@ std::size_t AppendedCells::bucket(std::int64_t cx, std::int64_t cy) {
 
 void AppendedCells::add(std::size_t m, double x, double y, double reach) {
   const std::size_t b = bucket(cell_of(x), cell_of(y));
+  increasing_ = increasing_ && (id_.empty() || m > id_.back());
   next_.push_back(head_[b]);
-  head_[b] = std::uint32_t(m);
+  head_[b] = std::uint32_t(id_.size());
+  id_.push_back(std::uint32_t(m));
   widest_ = std::max(widest_, reach);
 }
 
@@ -38,13 +41,14 @@ void AppendedCells::collect(double x, double y, double reach) {
   const std::int64_t r0 = cell_of(y - r), r1 = cell_of(y + r);
   if (double(c1 - c0 + 1) * double(r1 - r0 + 1) >= double(next_.size())) {
     // A block of more cells than particles added: looking at each of them is cheaper.
-    for (std::size_t k = 0; k < next_.size(); ++k) found_.push_back(std::uint32_t(first_ + k));
-    return;
+    found_ = id_;
+    if (increasing_) return;
+  } else {
+    for (std::int64_t cy = r0; cy <= r1; ++cy)
+      for (std::int64_t cx = c0; cx <= c1; ++cx)
+        for (std::uint32_t e = head_[bucket(cx, cy)]; e != kNone; e = next_[e])
+          found_.push_back(id_[e]);
   }
-  for (std::int64_t cy = r0; cy <= r1; ++cy)
-    for (std::int64_t cx = c0; cx <= c1; ++cx)
-      for (std::uint32_t m = head_[bucket(cx, cy)]; m != kNone; m = next_[m - first_])
-        found_.push_back(m);
   // Cells sharing a bucket list its particles once each; the rows keep the scan's order.
   std::sort(found_.begin(), found_.end());
   found_.erase(std::unique(found_.begin(), found_.end()), found_.end());

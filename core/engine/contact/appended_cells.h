@@ -3,7 +3,9 @@
 // The particles appended to the candidate lists since their last build, hashed by cell, so that
 // the row of a newly appended particle need not look at every other one: at a million grains
 // thousands join the members between two builds, and looking at each pair of them was 8 % of
-// the run. Its answer is the pairwise scan's to the bit: candidates in increasing index.
+// the run. Its answer is the pairwise scan's to the bit: candidates in increasing index. A grain
+// of the grid's rows whose search radius widened since the build is added too (the grid's
+// blocks are sized by the radii it was built with), so a particle may be added more than once.
 
 #include <cstddef>
 #include <cstdint>
@@ -13,18 +15,18 @@ namespace sedem {
 
 class AppendedCells {
  public:
-  // Empties it for particles numbered from `first` on, hashed in square cells of side `cell`
-  // (any positive side is correct; about a search diameter keeps a query to a few cells).
-  void reset(std::size_t first, double cell);
-  // Adds particle m (the next number: first, first + 1, ...) at (x, y) with search radius reach.
+  // Empties it, for particles hashed in square cells of side `cell` (any positive side is
+  // correct; about a search diameter keeps a query to a few cells).
+  void reset(double cell);
+  // Adds particle m at (x, y) with search radius reach.
   void add(std::size_t m, double x, double y, double reach);
-  // Calls visit(m), in increasing m, for every particle added whose cell lies within
+  // Calls visit(m), in increasing m and once each, for every particle added whose cell lies within
   // reach + the largest reach added of (x, y), and possibly for some farther ones (the caller
   // tests the distance).
   template <class Visit>
   void for_each_near(double x, double y, double reach, Visit&& visit);
   std::size_t bytes() const {
-    return (head_.capacity() + next_.capacity() + found_.capacity()) * 4;
+    return (head_.capacity() + next_.capacity() + id_.capacity() + found_.capacity()) * 4;
   }
 
  private:
@@ -34,10 +36,11 @@ class AppendedCells {
   static std::size_t bucket(std::int64_t cx, std::int64_t cy);
   void collect(double x, double y, double reach);
 
-  std::size_t first_ = 0;
   double inverse_cell_ = 1, widest_ = 0;
-  std::vector<std::uint32_t> head_;   // per bucket: the last particle added to it
-  std::vector<std::uint32_t> next_;   // per particle added: the one added to its bucket before it
+  bool increasing_ = true;            // every particle added after a lower one, none twice
+  std::vector<std::uint32_t> head_;   // per bucket: the last entry added to it
+  std::vector<std::uint32_t> next_;   // per entry: the one added to its bucket before it
+  std::vector<std::uint32_t> id_;     // per entry: its particle
   std::vector<std::uint32_t> found_;  // a query's candidates, sorted before they are visited
 };
 

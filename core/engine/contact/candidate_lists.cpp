@@ -17,40 +17,96 @@ void CandidateLists::configure(int threads) {
 void CandidateLists::rebuild(const EngineState& s, NeighbourGrid& grid, bool frozen_aware) {
   x0 = s.x;
   y0 = s.y;
+  widenings.clear();  // the radii now are the build's
   rebuild_at_build_positions(s, grid, frozen_aware);
 }
 
 void CandidateLists::rebuild_at_build_positions(const EngineState& s, NeighbourGrid& grid,
                                                 bool frozen_aware, std::size_t rows) {
+  // A checkpoint's radii are those after its widenings: the build had the first ones' `from`.
+  const std::vector<Widening> replay = std::move(widenings);
+  widenings.clear();
+  for (auto w = replay.rbegin(); w != replay.rend(); ++w) search[w->particle] = w->from;
   const std::size_t n = std::min(rows, s.size());
   grid.build(n, x0.data(), y0.data(), search.data());
   build(grid, n, x0.data(), y0.data(), search.data(), frozen_aware ? s.frozen.data() : nullptr);
   grid_rows = n;
+  appended_to_ = n;
+  row_particle_.clear();
+  append_row_.clear();
+  widened_.assign(n, 0);
   stale = false;
   double widest = 0;
   for (std::size_t i = 0; i < n; ++i) widest = std::max(widest, search[i]);
-  appended_.reset(n, widest > 0 ? 2 * widest : 1);
+  appended_.reset(widest > 0 ? 2 * widest : 1);
+  for (const Widening& w : replay) {
+    extend_to(s, grid, w.appended_to);
+    widen(grid, w.particle, w.to);
+  }
   extend(s, grid);
 }
 
-void CandidateLists::extend(const EngineState& s, const NeighbourGrid& grid) {
+void CandidateLists::extend_to(const EngineState& s, const NeighbourGrid& grid, std::size_t n) {
   if (stale) return;  // the next build takes them (lists not stale have been built)
-  const std::size_t n = s.size();
+  n = std::min(n, s.size());
   const double* bx = x0.data();
   const double* by = y0.data();
   const double* radius = search.data();
-  for (std::size_t k = rows(); k < n; ++k) {
+  for (std::size_t k = appended_to_; k < n; ++k) {
     auto take = [&](std::size_t m) {
       const double dx = bx[m] - bx[k], dy = by[m] - by[k], reach = radius[k] + radius[m];
       if (dx * dx + dy * dy < reach * reach) list_.push_back(std::uint32_t(m));
     };
-    // The grid holds the particles of its rows, at their build positions; those appended
-    // since are in appended_.
-    grid.for_each_near(bx[k], by[k], radius[k], bx, by, take);
+    // The grid holds the particles of its rows, at their build positions, and finds them by
+    // the radii it was built with; those appended since, and those widened, are in appended_.
+    grid.for_each_near(bx[k], by[k], radius[k], bx, by, [&](std::size_t m) {
+      if (!widened_[m]) take(m);
+    });
     appended_.for_each_near(bx[k], by[k], radius[k], take);
     appended_.add(k, bx[k], by[k], radius[k]);
+    append_row_.push_back(std::uint32_t(this->rows()));
+    row_particle_.push_back(std::uint32_t(k));
     list_start_.push_back(std::uint32_t(list_.size()));
   }
+  appended_to_ = std::max(appended_to_, n);
+}
+
+void CandidateLists::widen(const NeighbourGrid& grid, std::size_t k, double radius) {
+  if (stale || k >= appended_to_ || !(radius > search[k])) return;
+  const double before = search[k];
+  widenings.push_back({std::uint32_t(k), std::uint32_t(appended_to_), before, radius});
+  search[k] = radius;
+  const double* bx = x0.data();
+  const double* by = y0.data();
+  const double* r = search.data();
+  // The pairs held are those within the sum of their radii now (the build's, each append's and
+  // each widening's own): k's new ones are those its old radius did not reach.
+  auto take = [&](std::size_t m) {
+    if (m == k) return;
+    const double dx = bx[m] - bx[k], dy = by[m] - by[k];
+    const double now = radius + r[m], then = before + r[m], squared = dx * dx + dy * dy;
+    if (squared < now * now && !(squared < then * then)) list_.push_back(std::uint32_t(m));
+  };
+  grid.for_each_near(bx[k], by[k], radius, bx, by, [&](std::size_t m) {
+    if (!widened_[m]) take(m);
+  });
+  appended_.for_each_near(bx[k], by[k], radius, take);
+  if (k < grid_rows) widened_[k] = 1;
+  appended_.add(k, bx[k], by[k], radius);
+  row_particle_.push_back(std::uint32_t(k));
+  list_start_.push_back(std::uint32_t(list_.size()));
+}
+
+bool CandidateLists::widenings_fit(std::size_t n) const {
+  std::size_t appended = 0;
+  for (const Widening& w : widenings) {
+    if (w.particle >= n || w.appended_to > n || w.particle >= w.appended_to ||
+        w.appended_to < appended || !std::isfinite(w.from) || !std::isfinite(w.to) ||
+        !(w.from > 0) || !(w.to > w.from))
+      return false;
+    appended = w.appended_to;
+  }
+  return true;
 }
 
 void CandidateLists::build(const NeighbourGrid& grid, std::size_t n, const double* bx,
@@ -147,8 +203,10 @@ void CandidateLists::size_margins(const EngineState& s) {
 std::size_t CandidateLists::bytes() const {
   std::size_t b = 0;
   for (const auto& l : local_lists_) b += l.capacity() * 4;
-  b += (list_start_.capacity() + list_.capacity()) * 4;
-  return b + appended_.bytes();
+  b += (list_start_.capacity() + list_.capacity() + row_particle_.capacity() +
+        append_row_.capacity()) *
+       4;
+  return b + widened_.capacity() + widenings.capacity() * sizeof(Widening) + appended_.bytes();
 }
 
 }  // namespace sedem

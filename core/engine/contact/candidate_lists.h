@@ -30,12 +30,32 @@ class CandidateLists {
                                   std::size_t rows = SIZE_MAX);
   // Rows for the particles appended to the state since the last build or extension, without
   // touching the others (a grain joining the local stepper's members re-indexes nobody, and
-  // a full build costs a thousand times its share): row k lists every particle m < k within
-  // search[k] + search[m] of the build positions, its own x0, y0 those it had when appended
-  // (found in `grid`, the one the lists were built with, and among the other appended ones).
-  // So a pair with an appended particle is held once, in the later one's row. Not for the
-  // force pass (it reads the grid's rows only; the global stepper never appends).
-  void extend(const EngineState& s, const NeighbourGrid& grid);
+  // a full build costs a thousand times its share): particle k's row lists every particle m
+  // with a row before it within search[k] + search[m] of the build positions, its own x0, y0
+  // those it had when appended (found in `grid`, the one the lists were built with, and among
+  // the other appended ones). So a pair with an appended particle is held once, in the later
+  // one's row. Not for the force pass (it reads the grid's rows only; the global stepper never
+  // appends).
+  void extend(const EngineState& s, const NeighbourGrid& grid) { extend_to(s, grid, s.size()); }
+  // Widens particle k's search radius to `radius` without a build (carried steps: a grain
+  // picked up by a coarse one travels at its carrier's pace, and needs the pairs that pace can
+  // close): a row of its own lists the particles m that the wider radius brings within
+  // search[k] + search[m] and the old one did not, so every pair is still held once. Lists
+  // built with the final radii hold the same pairs. Nothing for a particle without a row yet,
+  // a radius no wider, or stale lists.
+  void widen(const NeighbourGrid& grid, std::size_t k, double radius);
+  // A widening since the build, in order: a checkpoint keeps them, and a resumed run's
+  // rebuild_at_build_positions takes the radii back to the build's and replays them (with
+  // the appends between them) to the same rows.
+  struct Widening {
+    std::uint32_t particle;     // state index
+    std::uint32_t appended_to;  // the particles that had rows then
+    double from, to;            // its search radius before and after
+  };
+  std::vector<Widening> widenings;
+  // Whether the widenings read from a checkpoint name particles and radii a state of n
+  // particles can hold (replaying them indexes the state with them).
+  bool widenings_fit(std::size_t n) const;
   // Valid while no particle has moved more than half the margin the radii carry beyond the
   // interaction range: see the comment at its definition.
   bool moved_beyond_margin(const EngineState& s);
@@ -49,12 +69,19 @@ class CandidateLists {
   static constexpr double kWidenAbove = 0.35, kNarrowBelow = 0.15, kWidestMargin = 8;
   // The lists: row k lists the partners of particle_of(k). The first grid_rows rows follow
   // the grid's order (a same-level pair in both rows, a cross-level pair in the finer side's);
-  // the rest are extend()'s, row k particle k's.
+  // the rest are extend()'s and widen()'s, each pair of them held there alone.
   const std::vector<std::uint32_t>& list_start() const { return list_start_; }
   const std::vector<std::uint32_t>& list() const { return list_; }
   std::size_t rows() const { return list_start_.empty() ? 0 : list_start_.size() - 1; }
   std::uint32_t particle_of(std::size_t row, const NeighbourGrid& grid) const {
-    return row < grid_rows ? grid.order()[row] : std::uint32_t(row);
+    return row < grid_rows ? grid.order()[row] : row_particle_[row - grid_rows];
+  }
+  // The particles 0 .. appended_to() - 1 have rows (the grid's, then the appended ones).
+  std::size_t appended_to() const { return appended_to_; }
+  // The first row holding a pair of a particle appended from `particle` on: the later rows
+  // hold every such pair (and maybe others).
+  std::size_t first_row_from(std::size_t particle) const {
+    return particle < grid_rows ? 0 : first_appended_row(particle);
   }
   // Working memory of the lists themselves (the radii and build positions not included).
   std::size_t bytes() const;
@@ -77,12 +104,22 @@ class CandidateLists {
  private:
   void build(const NeighbourGrid& grid, std::size_t n, const double* bx, const double* by,
              const double* radius, const std::uint8_t* frozen);
+  // extend() for the particles up to n only.
+  void extend_to(const EngineState& s, const NeighbourGrid& grid, std::size_t n);
+  // The row of appended particle k, or rows() if k has none yet.
+  std::size_t first_appended_row(std::size_t k) const {
+    return k < appended_to_ ? append_row_[k - grid_rows] : rows();
+  }
 
   int threads_ = 1;
   std::vector<double> top_excess_;  // per thread: the two largest moves beyond the margin
   std::vector<std::vector<std::uint32_t>> local_lists_;
   std::vector<std::uint32_t> list_start_, list_;
-  AppendedCells appended_;  // the rows extend() added since the last build
+  AppendedCells appended_;  // the particles appended, and those widened, since the last build
+  std::size_t appended_to_ = 0;
+  std::vector<std::uint32_t> row_particle_;  // per row after the grid's: its particle
+  std::vector<std::uint32_t> append_row_;    // per appended particle: its row
+  std::vector<std::uint8_t> widened_;        // per particle of the grid's rows: in appended_
 };
 
 }  // namespace sedem

@@ -205,7 +205,7 @@ class ExponentialIntegrator final : public Integrator {
     const CandidateLists& lists = *ctx_.lists;
     const std::vector<std::uint32_t>& start = lists.list_start();
     const std::vector<std::uint32_t>& list = lists.list();
-    const std::size_t listed = std::min(n, lists.rows());
+    const std::size_t listed = lists.rows();
     // The rows that hold a pair with a grain of the set, from the pass that added none: the
     // only ones its sub-steps' projection reads.
     for (bool grew = true; grew;) {
@@ -406,11 +406,11 @@ class ExponentialIntegrator final : public Integrator {
     if (!any_carried_) return rate > 0 ? std::min(ceiling_, 1.0 / rate) : ceiling_;
     const std::vector<std::uint32_t>& start = lists.list_start();
     const std::vector<std::uint32_t>& list = lists.list();
-    const std::size_t listed = std::min(n, lists.rows());
+    const std::size_t listed = lists.rows();
     // A pair closes at most at the sum of both speeds (floors included): most pairs are then
     // far enough apart not to bind, which their squared distance tells without a root. The
-    // pairs of particles appended from `from` on are in the rows from there (their own).
-    for (std::size_t k = from; k < listed; ++k) {
+    // pairs of particles appended from `from` on are in the rows from theirs on.
+    for (std::size_t k = lists.first_row_from(from); k < listed; ++k) {
       const std::uint32_t i = lists.particle_of(k, *ctx_.grid);
       if (i >= n) continue;
       for (std::uint32_t q = start[k]; q < start[k + 1]; ++q) {

@@ -158,11 +158,16 @@ void EngineParts::widen_search(std::size_t from) {
       lists.search[k] = std::max(lists.search[k], carried_search(k, *carrier));
 }
 
-bool EngineParts::carriers_outgrew_lists() const {
+void EngineParts::widen_lists() {
+  if (lists.stale) return;
   if (const std::vector<double>* carrier = carried ? integrator->carrier_radii() : nullptr)
-    for (std::size_t k = 0; k < state.size(); ++k)
-      if (carried_search(k, *carrier) > lists.search[k]) return true;
-  return false;
+    for (std::size_t k = 0; k < state.size(); ++k) {
+      const double wanted = carried_search(k, *carrier);
+      if (wanted > lists.search[k]) {
+        lists.widen(grid, k, wanted);
+        ++stats.widened_rows;
+      }
+    }
 }
 
 void EngineParts::rebuild_lists() {
@@ -172,8 +177,8 @@ void EngineParts::rebuild_lists() {
 }
 
 void EngineParts::extend_lists() {
-  if (lists.stale || lists.rows() >= state.size()) return;
-  widen_search(lists.rows());
+  if (lists.stale || lists.appended_to() >= state.size()) return;
+  widen_search(lists.appended_to());
   lists.extend(state, grid);
 }
 

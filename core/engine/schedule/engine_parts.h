@@ -43,8 +43,9 @@ struct EngineParts {
   [[noreturn]] void throw_blowup(const Blowup& b, double at) const;
   // Carried steps: the search radii of particles from..end follow their carriers.
   void widen_search(std::size_t from);
-  // Carried steps: some member's carrier asks for a wider search than its lists' row holds.
-  bool carriers_outgrew_lists() const;
+  // Carried steps: the members whose carrier asks for a wider search than their lists' rows
+  // hold get it (CandidateLists::widen), unless the lists are stale.
+  void widen_lists();
   // Carried steps: the search radius member k's carrier asks for.
   double carried_search(std::size_t k, const std::vector<double>& carrier) const;
 

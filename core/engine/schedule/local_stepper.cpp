@@ -277,8 +277,10 @@ void LocalStepper::step(double limit) {
 // At a step's end: the lists are then always fresh, so a checkpoint (which keeps whether they
 // are stale, not why) resumes to the same step.
 void LocalStepper::fresh_step() {
-  // A grain picked up since the build would move at its own radius's pace until the next one.
-  if (e_.carried && !e_.lists.stale && e_.carriers_outgrew_lists()) e_.lists.stale = true;
+  // A grain picked up since the build would move at its own radius's pace until the next one:
+  // its rows widen. (Rebuilding every list for it did so at every step at a million grains,
+  // where some fine grain is picked up somewhere at each.)
+  if (e_.carried) e_.widen_lists();
   if (e_.carried && e_.lists.stale && e_.state.size() > 0) {
     if (e_.resort_and_rebuild_lists()) index_members();
   }
