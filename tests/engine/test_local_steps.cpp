@@ -284,34 +284,44 @@ TEST(LocalSteps, WithoutSuspensionContactsLanesGiveTheSameBitsOnOneThreadOrTwo) 
   std::filesystem::remove(checkpoint);
 }
 
-// Where grains meet everywhere the members' step (lists, integration, projection) goes on the
-// engine's threads when they are many (core/engine/threads_for.h): a crowd of 4000 grains gives
-// the same bits on one thread and two, its members passing back and forth across the count
-// where the second thread starts.
+// Where grains meet everywhere the members' step (lists, integration, projection, and with
+// carried steps the step's choice) goes on the engine's threads when they are many
+// (core/engine/threads_for.h): a crowd of 4000 grains gives the same bits on one thread and two,
+// its members passing back and forth across the count where the second thread starts.
 TEST(LocalSteps, WithContactsEverywhereTheMembersStepGivesTheSameBitsOnOneThreadOrTwo) {
-  Scene scene = scene_with("di_felice", "exponential");
-  scene.integrator.local_steps = true;
-  const double hw = scene.cylinder.half_width();
-  const auto grains = test::scattered(
-      4000, -0.5 * hw, 0.5 * hw, 0.0005, 0.05,
-      [](int k) { return k % 4 == 0 ? 70e-6 : (k % 4 == 1 ? 30e-6 : 5e-6); }, 5, 0.0);
-  Engine one(engine_setup(test::on_threads(scene, 1)), sample_of(grains));
-  Engine two(engine_setup(test::on_threads(scene, 2)), sample_of(grains));
-  ASSERT_EQ(one.threads(), 1);
-  ASSERT_EQ(two.threads(), 2);
-  std::size_t most = 0, least = grains.size();
-  while (one.time() < 3) {
-    one.step(3);
-    two.step(3);
-    ASSERT_EQ(one.time(), two.time()) << "step " << one.stats().steps;
-    most = std::max(most, one.stats().members);
-    least = std::min(least, one.stats().members);
+  for (const bool carried : {false, true}) {
+    SCOPED_TRACE(carried ? "carried sub-steps" : "one rate");
+    Scene scene = scene_with("di_felice", "exponential");
+    scene.integrator.local_steps = true;
+    if (carried) {
+      scene.integrator.carried_fraction = 0.8;
+      scene.integrator.carried_substeps = true;
+    }
+    const double hw = scene.cylinder.half_width();
+    const auto grains = test::scattered(
+        4000, -0.5 * hw, 0.5 * hw, 0.0005, 0.05,
+        [](int k) { return k % 4 == 0 ? 70e-6 : (k % 4 == 1 ? 30e-6 : 5e-6); }, 5, 0.0);
+    Engine one(engine_setup(test::on_threads(scene, 1)), sample_of(grains));
+    Engine two(engine_setup(test::on_threads(scene, 2)), sample_of(grains));
+    ASSERT_EQ(one.threads(), 1);
+    ASSERT_EQ(two.threads(), 2);
+    std::size_t most = 0, least = grains.size();
+    while (one.time() < 3) {
+      one.step(3);
+      two.step(3);
+      ASSERT_EQ(one.time(), two.time()) << "step " << one.stats().steps;
+      most = std::max(most, one.stats().members);
+      least = std::min(least, one.stats().members);
+    }
+    test::expect_same_bits(one.particles(), two.particles());
+    EXPECT_EQ(two.stats().steps, one.stats().steps);
+    EXPECT_EQ(two.stats().particle_steps, one.stats().particle_steps);
+    EXPECT_GE(most, kThreadedFrom) << "the second thread never started";
+    EXPECT_LT(least, kThreadedFrom) << "the second thread never stopped";
+    if (carried) {
+      EXPECT_GT(one.stats().widened_rows, 0) << "no grain was picked up";
+    }
   }
-  test::expect_same_bits(one.particles(), two.particles());
-  EXPECT_EQ(two.stats().steps, one.stats().steps);
-  EXPECT_EQ(two.stats().particle_steps, one.stats().particle_steps);
-  EXPECT_GE(most, kThreadedFrom) << "the second thread never started";
-  EXPECT_LT(least, kThreadedFrom) << "the second thread never stopped";
 }
 
 // Grains that fall below every instrument retire onto the coarse bed. Those that stay above are
