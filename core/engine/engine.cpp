@@ -204,6 +204,14 @@ void Engine::load_checkpoint(std::istream& in, const std::string& path) {
   } else if (!e.local && members != e.sample.particles.size()) {
     throw std::runtime_error("checkpoint does not match this sample: " + path);
   }
+  // What the file holds after the read position: a count read back is refused past it.
+  auto bytes_left = [&]() -> std::uint64_t {
+    const auto here = in.tellg();
+    in.seekg(0, std::ios::end);
+    const auto end = in.tellg();
+    in.seekg(here);
+    return here < 0 || end < here ? 0 : std::uint64_t(end - here);
+  };
   // Every value read back is checked before it is used: a damaged file is refused with the
   // field it got wrong, never a crash or a silently shorter run.
   auto validate_loaded_state = [&](std::uint64_t springs) {
@@ -238,11 +246,7 @@ void Engine::load_checkpoint(std::istream& in, const std::string& path) {
       bad("the candidate lists' " + std::to_string(e.lists.grid_rows) + " rows exceed the " +
           std::to_string(n) + " particles the state holds");
     // The springs follow: no more of them than the file holds.
-    const auto here = in.tellg();
-    in.seekg(0, std::ios::end);
-    const auto end = in.tellg();
-    in.seekg(here);
-    if (here < 0 || end < here || springs > std::uint64_t(end - here) / sizeof(PairHistory::Entry))
+    if (springs > bytes_left() / sizeof(PairHistory::Entry))
       bad(std::to_string(springs) + " contacts announced, more than the file holds");
   };
   read_value(in, e.time);
@@ -252,16 +256,8 @@ void Engine::load_checkpoint(std::istream& in, const std::string& path) {
   read_value(in, e.facts.min_contact_mass);
   checkpoint_fields(
       e, [&](auto& v) { read_vector(in, v); }, [&](auto& v) { read_value(in, v); });
-  {
-    const auto here = in.tellg();
-    in.seekg(0, std::ios::end);
-    const auto end = in.tellg();
-    in.seekg(here);
-    const std::uint64_t room =
-        here < 0 || end < here ? 0 : std::uint64_t(end - here) / sizeof(CandidateLists::Widening);
-    read_vector_upto(in, e.lists.widenings, room);
-    if (e.lists.stale) e.lists.widenings.clear();  // the next build starts afresh
-  }
+  read_vector_upto(in, e.lists.widenings, bytes_left() / sizeof(CandidateLists::Widening));
+  if (e.lists.stale) e.lists.widenings.clear();  // the next build starts afresh
   std::uint64_t count = 0;
   read_value(in, count);
   validate_loaded_state(count);

@@ -57,12 +57,7 @@ void CandidateLists::extend_to(const EngineState& s, const NeighbourGrid& grid, 
       const double dx = bx[m] - bx[k], dy = by[m] - by[k], reach = radius[k] + radius[m];
       if (dx * dx + dy * dy < reach * reach) list_.push_back(std::uint32_t(m));
     };
-    // The grid holds the particles of its rows, at their build positions, and finds them by
-    // the radii it was built with; those appended since, and those widened, are in appended_.
-    grid.for_each_near(bx[k], by[k], radius[k], bx, by, [&](std::size_t m) {
-      if (!widened_[m]) take(m);
-    });
-    appended_.for_each_near(bx[k], by[k], radius[k], take);
+    for_each_held_near(grid, k, radius[k], take);
     appended_.add(k, bx[k], by[k], radius[k]);
     append_row_.push_back(std::uint32_t(this->rows()));
     row_particle_.push_back(std::uint32_t(k));
@@ -87,10 +82,7 @@ void CandidateLists::widen(const NeighbourGrid& grid, std::size_t k, double radi
     const double now = radius + r[m], then = before + r[m], squared = dx * dx + dy * dy;
     if (squared < now * now && !(squared < then * then)) list_.push_back(std::uint32_t(m));
   };
-  grid.for_each_near(bx[k], by[k], radius, bx, by, [&](std::size_t m) {
-    if (!widened_[m]) take(m);
-  });
-  appended_.for_each_near(bx[k], by[k], radius, take);
+  for_each_held_near(grid, k, radius, take);
   if (k < grid_rows) widened_[k] = 1;
   appended_.add(k, bx[k], by[k], radius);
   row_particle_.push_back(std::uint32_t(k));

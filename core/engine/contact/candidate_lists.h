@@ -81,7 +81,8 @@ class CandidateLists {
   // The first row holding a pair of a particle appended from `particle` on: the later rows
   // hold every such pair (and maybe others).
   std::size_t first_row_from(std::size_t particle) const {
-    return particle < grid_rows ? 0 : first_appended_row(particle);
+    if (particle < grid_rows) return 0;
+    return particle < appended_to_ ? append_row_[particle - grid_rows] : rows();
   }
   // Working memory of the lists themselves (the radii and build positions not included).
   std::size_t bytes() const;
@@ -106,9 +107,16 @@ class CandidateLists {
              const double* radius, const std::uint8_t* frozen);
   // extend() for the particles up to n only.
   void extend_to(const EngineState& s, const NeighbourGrid& grid, std::size_t n);
-  // The row of appended particle k, or rows() if k has none yet.
-  std::size_t first_appended_row(std::size_t k) const {
-    return k < appended_to_ ? append_row_[k - grid_rows] : rows();
+  // Calls visit(m) for every particle m with a row that may lie within reach + search[m] of
+  // particle k's build position (and maybe farther: the caller tests the distance). The grid
+  // finds its rows' particles by the radii it was built with; those appended since, and those
+  // widened, are in appended_ instead.
+  template <class Visit>
+  void for_each_held_near(const NeighbourGrid& grid, std::size_t k, double reach, Visit&& visit) {
+    grid.for_each_near(x0[k], y0[k], reach, x0.data(), y0.data(), [&](std::size_t m) {
+      if (!widened_[m]) visit(m);
+    });
+    appended_.for_each_near(x0[k], y0[k], reach, visit);
   }
 
   int threads_ = 1;
