@@ -18,8 +18,10 @@ namespace {
 // The last byte is the format's version: 2 keeps the candidate lists' rows in the grid's order;
 // 3 the stats of what set the step and of the carried sub-steps (EngineStats is written whole);
 // 4 members' boxes with an allowance of 2 radii (a box of 3 read back as 2 would resume,
-// safely, as neither version's run); 5 the candidate lists' widenings since their build.
-constexpr char kMagic[8] = {'S', 'E', 'D', 'E', 'M', 'C', 'K', '5'};
+// safely, as neither version's run); 5 the candidate lists' widenings since their build; 6
+// members' boxes of a few steps' travel (integrator.member_box_steps), which a version that
+// read every member's box as 2 radii would let its grain leave.
+constexpr char kMagic[8] = {'S', 'E', 'D', 'E', 'M', 'C', 'K', '6'};
 
 // The particle state and the lists' build in checkpoint order, for saving and loading alike
 // (`Parts`: EngineParts, const when saving).

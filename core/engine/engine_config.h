@@ -38,7 +38,10 @@ struct IntegratorConfig {
   // with carried steps: the grains carried further than their own radius allows take exact
   // sub-steps of their own within the step
   bool carried_substeps = false;
-  double max_coast = 60.0;     // s, longest window of a coasting grain
+  double max_coast = 60.0;  // s, longest window of a coasting grain
+  // local steps: a member's box allows this many of the last step's travel where its own radii
+  // would reach further than a fiftieth of the mean spacing (0: its own radii)
+  double member_box_steps = 4;
   bool freeze_settled = true;  // freeze resting particles below every instrument
   bool retire_below = true;    // local steps: grains below every instrument land analytically
   std::int64_t threads = 0;    // 0: all cores

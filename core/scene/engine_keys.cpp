@@ -82,6 +82,14 @@ void describe(IntegratorConfig& c, Schema& s) {
            "exponential with local_steps: the longest window a free grain coasts with its drag "
            "(and the voidage it feels) held constant.")
       .min_exclusive = true;
+  s.number("integrator.member_box_steps", &c.member_box_steps, "", 1, 0, 1e6,
+           "exponential with local_steps: a grain on the common step holds a box it cannot leave "
+           "before it is looked at again, which lets it travel 2 of its radii, and a step moves "
+           "it at most crossing_fraction of one. Where its radius is more than a fiftieth of the "
+           "mean spacing, this many times its travel in the last step, over crossing_fraction, "
+           "stands for its radius if that is less (but no less than the fiftieth). Smaller boxes "
+           "meet fewer grains' boxes, so fewer grains join the common step; the step can grow by "
+           "this factor each time a box moves. 0: every grain's own radius. 0 or at least 2.");
   s.integer("integrator.threads", &c.threads, 0, 1024,
             "Worker threads; 0 uses every core. With local_steps they take the syncs' lanes "
             "where the free grains pass each other (forces.suspension_contacts = false); where "

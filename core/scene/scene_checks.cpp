@@ -284,6 +284,11 @@ void check_scene(const Scene& scene, const SceneOrigins& origins) {
     check.fail("integrator.carried_substeps",
                "needs carried steps: set integrator.carried_fraction in (0, 1] (0.8 lets "
                "the step be what the coarse grains alone allow)");
+  const double box_steps = scene.integrator.member_box_steps;
+  if (box_steps != 0 && !(box_steps >= 2))
+    check.fail("integrator.member_box_steps",
+               "must be 0 (boxes of 2 radii) or at least 2 (below 2 a step could not grow "
+               "past the one before it)");
   check_instruments(scene, check);
   check_sampled_volumes(scene, origins, check);
   check_coasting(scene, check);

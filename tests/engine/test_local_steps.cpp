@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <sstream>
 
 #include "core/engine/contact/box_registry.h"
 #include "core/engine/integrate/free_flight.h"
@@ -179,6 +180,58 @@ TEST(LocalSteps, KeepTheirPromiseInACrowdedSuspension) {
     }
     EXPECT_GT(engaged, 100) << mode.name << ": "
                             << engaged;  // the suspension did crowd the common step
+  }
+}
+
+// Where grains crowd as at a million in the section (a mean spacing of 170 um), a coarse member's
+// box of 2 radii reaches its neighbours' though the step the fine grains set moves it a fraction
+// of a radius: boxes of a few steps' travel (integrator.member_box_steps) keep the promise after
+// every step, hold fewer grains on the common step, let every size fall as with boxes of 2
+// radii, and resume from a checkpoint to the bit, with carried sub-steps too.
+TEST(LocalSteps, MembersBoxesByTheirTravelHoldFewerGrainsAndKeepThePromise) {
+  Scene scene = scene_with("di_felice", "exponential");
+  scene.integrator.local_steps = true;
+  scene.cylinder.diameter = 0.004;
+  scene.cylinder.height = 0.02;
+  const double hw = scene.cylinder.half_width();
+  const auto grains = test::crowd(-0.9 * hw, 0.9 * hw, 0.004, 0.016);
+  auto size_of = [](double d) { return d > 50e-6 ? 0 : (d > 10e-6 ? 1 : 2); };
+  for (bool substeps : {false, true}) {
+    scene.integrator.carried_fraction = substeps ? 0.8 : 0.0;
+    scene.integrator.carried_substeps = substeps;
+    double members[2] = {0, 0}, fall[2][3] = {{0, 0, 0}, {0, 0, 0}};
+    for (int by_travel : {0, 1}) {
+      scene.integrator.member_box_steps = by_travel ? 4 : 0;
+      Engine engine(engine_setup(scene), sample_of(grains));
+      std::stringstream checkpoint;
+      while (engine.time() < 0.2) {
+        engine.step(0.2);
+        members[by_travel] += double(engine.stats().members);
+        if (by_travel) {
+          ASSERT_EQ(engine.local_violation(), "")
+              << "sub-steps " << substeps << ", at t = " << engine.time() << " s";
+          if (engine.time() >= 0.1 && checkpoint.str().empty()) engine.save_checkpoint(checkpoint);
+        }
+      }
+      if (by_travel) {  // the boxes' paces come back from the checkpoint to the bit
+        Engine resumed(engine_setup(scene), sample_of(grains));
+        resumed.load_checkpoint(checkpoint, "members' boxes");
+        while (resumed.time() < 0.2) resumed.step(0.2);
+        test::expect_same_bits(engine.particles(), resumed.particles());
+      }
+      members[by_travel] /= double(engine.stats().steps);
+      for (const test::Grain& g : grains) fall[by_travel][size_of(g.d)] += g.y;
+      const Particles& p = engine.particles();
+      for (std::size_t i = 0; i < p.size(); ++i) fall[by_travel][size_of(p.diameter[i])] -= p.y[i];
+    }
+    // With sub-steps the coarse grains set the step, which moves them as far as their radii
+    // allow: their boxes stay.
+    if (!substeps) {
+      EXPECT_LT(members[1], 0.9 * members[0]) << members[1] << " against " << members[0];
+    }
+    for (int size = 0; size < 3; ++size)
+      EXPECT_NEAR(fall[1][size], fall[0][size], 0.005 * fall[0][size])
+          << "sub-steps " << substeps << ", size " << size;
   }
 }
 

@@ -155,6 +155,16 @@ TEST(SceneChecks, UnknownKeysInAnyTableGetTheNearestName) {
   EXPECT_MESSAGE(error_of("[sample\nseed = 3\n"), "bad.toml:1: ");
 }
 
+// A member's box of less than 2 steps' travel would keep every later step from growing.
+TEST(SceneChecks, MemberBoxStepsAreZeroOrAtLeastTwo) {
+  const std::string e = test::scene_error("[integrator]\nmember_box_steps = 1.5\n", {});
+  EXPECT_NE(e.find("bad.toml:2: integrator.member_box_steps = 1.5 must be 0"), std::string::npos)
+      << e;
+  EXPECT_NE(e.find("or at least 2"), std::string::npos) << e;
+  EXPECT_EQ(test::scene_error("[integrator]\nmember_box_steps = 0\n", {}), "");
+  EXPECT_EQ(test::scene_error("[integrator]\nmember_box_steps = 2\n", {}), "");
+}
+
 }  // namespace
 }  // namespace sedem
 

@@ -83,6 +83,9 @@ class ExponentialIntegrator final : public Integrator {
     std::fill(touching.begin(), touching.end(), 0.0);
     for (std::uint32_t p : touched_) touching[p] = 1.0;
   }
+  double travel_in_step(const EngineState& s, std::size_t k) const override {
+    return floored_speed(s, k) * step_;
+  }
   SubstepReport substeps() const override {
     return split_ ? SubstepReport{fast_.size(), taken_} : SubstepReport{};
   }
@@ -304,6 +307,9 @@ class ExponentialIntegrator final : public Integrator {
     const bool marked = !ctx_.members_only;
     if (marked)
       for (std::uint32_t p : projection_.participants()) constrained_[p] = 1;
+    // Local steps: a member's box may let it travel less than its own radius.
+    const double* box_pace =
+        ctx_.allowance && !ctx_.allowance->empty() ? ctx_.allowance->data() : nullptr;
     const int threads = from == 0 ? ctx_.threads : 1;  // a few joiners: not worth a thread
     const ThreadSums sums =
         integrate(threads, s.size() - from, sums_, [&](std::size_t k, ThreadSums& t) {
@@ -314,12 +320,14 @@ class ExponentialIntegrator final : public Integrator {
           const double free_settling = settling_ * d * d;
           const double settling = constrained_[i] ? 0.0 : free_settling;
           const double speed = std::sqrt(std::max(v2, settling * settling));
-          t.max_radii_per_s = std::max(t.max_radii_per_s, 2 * speed / d);
+          // speed / (d / 2) is 2 speed / d to the bit: one rounding of the same quotient.
+          const double pace = box_pace ? std::min(0.5 * d, box_pace[s.origin[i]]) : 0.5 * d;
+          t.max_radii_per_s = std::max(t.max_radii_per_s, speed / pace);
           const double pushed = free_settling * StepLimit::kPushedSpeedRatio;
           if (v2 > pushed * pushed)
             ++t.pushed;
           else
-            t.max_unpushed_radii_per_s = std::max(t.max_unpushed_radii_per_s, 2 * speed / d);
+            t.max_unpushed_radii_per_s = std::max(t.max_unpushed_radii_per_s, speed / pace);
         });
     if (marked)
       for (std::uint32_t p : projection_.participants()) constrained_[p] = 0;
@@ -391,14 +399,13 @@ class ExponentialIntegrator final : public Integrator {
     for (std::size_t k = from; k < n; ++k) {
       closing_[k] = closing_speed(s, k);
       if (s.frozen[k]) continue;
-      // A grain that touches nothing keeps its own radius, which its lists' margin and its box
-      // always allow (and which needs no look-up by sample index, a cache miss each).
+      // A grain that touches nothing keeps its own radius, which its lists' margin always
+      // allows; its box may allow less.
       const std::uint32_t id = s.origin[k];
       double pace = 0.5 * s.diameter[k];
-      if (touching_[id]) {
+      if (touching_[id])
         pace = std::min(carrier_[id], lists.margin_of(k, s.diameter[k]) / lists.margin);
-        if (allowance) pace = std::min(pace, (*allowance)[id]);
-      }
+      if (allowance) pace = std::min(pace, (*allowance)[id]);
       rate = std::max(rate, floored_speed(s, k) / (c * pace));
     }
     // With every grain at its own radius's pace no pair can close by more than the pair rule

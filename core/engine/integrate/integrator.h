@@ -75,9 +75,10 @@ struct IntegratorContext {
   // part, so the step counts every moving grain at least at its settling speed (a grain a
   // contact slowed may fall free within the step), not only the unsupported ones.
   bool members_only = false;
-  // Carried steps (integrator.carried_fraction > 0, local steps only): the sample's diameters
-  // and, by sample index, the radius in which each member's box lets it move (its allowance;
-  // empty: no bound), both owned by the engine.
+  // Local steps: by sample index, the radius in which each member's box lets it move (its
+  // pace; empty: no bound, the global scheme): a step lets a member travel crossing_fraction of
+  // it. Carried steps (integrator.carried_fraction > 0): also the sample's diameters. Both are
+  // owned by the engine.
   bool carried_steps = false;
   const std::vector<double>* sample_diameter = nullptr;
   const std::vector<double>* allowance = nullptr;
@@ -126,6 +127,9 @@ class Integrator {
   // carried_fraction / crossing_fraction, or its own radius if that is more (or it touches
   // none); a step lets it travel crossing_fraction of that. nullptr without carried steps.
   virtual const std::vector<double>* carrier_radii() const { return nullptr; }
+  // Local steps: how far member k (state index) may travel in the step last chosen, at its
+  // speed or at least its settling speed (what the step's rule counts); 0 if none was chosen.
+  virtual double travel_in_step(const EngineState&, std::size_t /*k*/) const { return 0; }
   // Carried sub-steps: the fast set of the last advance and the sub-steps it took ({0, 0}: the
   // step was not split).
   virtual SubstepReport substeps() const { return {}; }

@@ -114,7 +114,7 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
   // the carriers.
   lists.margin_per_grain = local && model.contact;
   lists.range = 1 + reach + model.skin;
-  if (carried) allowance.assign(n, HUGE_VAL);
+  if (local && model.contact) allowance.assign(n, HUGE_VAL);
 
   const Fluid& fluid = setup.fluid;
   IntegratorContext ctx;

@@ -72,16 +72,17 @@ void LocalStepper::anchor(std::size_t k) {
   if (e_.model.contact)
     boxes_.set(id, member_box(k),
                box_tag(e_.state.frozen[k] ? GrainKind::frozen : GrainKind::moving));
-  if (e_.carried) note_allowance(id, k);
+  if (e_.model.contact) note_allowance(id, k);
 }
 
-// Carried steps: the radius in which member k's box lets it move, read off the box itself (so
-// that a checkpoint's boxes give the same bound to the last bit).
+// The radius in which member k's box lets it move, read off the box itself (so that a
+// checkpoint's boxes give the same bound to the last bit). A pace within rounding of the
+// grain's own radius is its own radius, exactly.
 void LocalStepper::note_allowance(std::uint32_t id, std::size_t k) {
   const double r = 0.5 * e_.state.diameter[k];
   const Box& b = boxes_.box(id);
-  e_.allowance[id] =
-      e_.state.frozen[k] ? r : std::max(0.0, 0.5 * (b.x1 - b.x0) - r * (1 + kSkin)) / kAllowance;
+  const double pace = std::max(0.0, 0.5 * (b.x1 - b.x0) - r * (1 + kSkin)) / kAllowance;
+  e_.allowance[id] = e_.state.frozen[k] || std::abs(pace - r) <= 1e-9 * r ? r : pace;
 }
 
 Box LocalStepper::member_box(std::size_t k) const {
@@ -89,7 +90,16 @@ Box LocalStepper::member_box(std::size_t k) const {
   // With carried steps a grain held against a coarser one moves at its pace: its box allows
   // as many of the coarser one's radii.
   const std::vector<double>* carrier = e_.carried ? e_.integrator->carrier_radii() : nullptr;
-  const double pace = carrier ? std::max(r, (*carrier)[e_.state.origin[k]]) : r;
+  double pace = carrier ? std::max(r, (*carrier)[e_.state.origin[k]]) : r;
+  // A box of a few steps' travel, where its radii would reach the neighbours' boxes: at a
+  // million grains a coarse member's box of 2 radii crossed more than the mean spacing, though
+  // the step the fine grains set moved it a tenth of a radius, and such boxes held each other
+  // on the common step. The step then keeps it within that pace (travel_in_step).
+  const double steps = e_.setup.integrator.member_box_steps;
+  const double travel = steps > 0 ? e_.integrator->travel_in_step(e_.state, k) : 0.0;
+  if (travel > 0)
+    pace = std::min(pace,
+                    std::max(least_pace_, steps * travel / e_.setup.integrator.crossing_fraction));
   const double reach = r * (1 + kSkin) + (e_.state.frozen[k] ? 0.0 : kAllowance * pace);
   return Box{e_.state.x[k] - reach, e_.state.x[k] + reach, e_.state.y[k] - reach,
              e_.state.y[k] + reach};

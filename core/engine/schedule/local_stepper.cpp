@@ -32,6 +32,7 @@ LocalStepper::LocalStepper(EngineParts& parts) : e_(parts) {
                 ? kTravel * spacing
                 : std::max(kTravel * spacing, e_.setup.forces.voidage_cell);
   registry_cell_ = std::max(spacing, 4 * dmax);
+  least_pace_ = kLeastPace * spacing;
   land_y_.assign(n, 0.0);
   ahead_slot_.assign(n, kNoMember);
   widened_.clear();
@@ -251,7 +252,7 @@ void LocalStepper::step(double limit) {
       const std::uint32_t id = e_.state.origin[k];
       const double dx = e_.state.x[k] - member_track_[k].x;
       const double dy = e_.state.y[k] - member_track_[k].y;
-      const double pace = kReanchor * (e_.carried ? e_.allowance[id] : 0.5 * e_.state.diameter[k]);
+      const double pace = kReanchor * e_.allowance[id];
       if (dx * dx + dy * dy > pace * pace) wake_.push_back(id);
     }
     wake_around(kNoMember);

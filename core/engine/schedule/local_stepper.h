@@ -11,11 +11,12 @@
 //
 // Proof that nothing is missed: every grain holds a box in a BoxRegistry that it cannot leave
 // before it is looked at again — a coasting grain the box its trajectory sweeps over its
-// window, a member of the common step its position with an allowance of kAllowance radii
-// (re-anchored once it has used kReanchor of them; it moves at most crossing_fraction < 1 radius
-// a step; with carried steps, pace radii: a grain held against a coarser one moves at its pace),
-// a settled grain its disc — each widened by (1 + kSkin) radii. A window is chosen so
-// that its box overlaps no other box and no wall; the longest such window up to
+// window, a member of the common step its position with an allowance of kAllowance pace radii
+// (re-anchored once it has used kReanchor of them; it moves at most crossing_fraction < 1 of one
+// a step), a settled grain its disc — each widened by (1 + kSkin) radii. A member's pace radius
+// is its own, or, with carried steps, that of a coarser grain it is held against, or, for a
+// coarse grain at a high count, a few steps' travel (integrator.member_box_steps). A window is
+// chosen so that its box overlaps no other box and no wall; the longest such window up to
 // integrator.max_coast_s, halved until it fits. A grain that cannot coast even over its own
 // crossing time joins the common step (it is *engaged*), and whatever its box then overlaps
 // joins with it: coasting grains at their exact position now, settled ones as frozen members.
@@ -92,6 +93,12 @@ class LocalStepper {
   // common step (docs/results/engine.md, "Members' boxes").
   static constexpr double kAllowance = 2.0;
   static constexpr double kReanchor = 1.0;
+  // A member's pace radius is integrator.member_box_steps times its travel in the last step over
+  // crossing_fraction, if that is less than its own radius, and no less than kLeastPace mean
+  // spacings (member_box): in a million grains' first 0.3 s, 0.01 spacings made more steps and
+  // 0.05 kept more members (docs/results/engine.md, "Members' boxes by their travel").
+  static constexpr double kLeastPace = 0.02;
+  double least_pace_ = 0;
   // Relative gap to the terminal velocity of a long window.
   static constexpr double kConverged = 1e-3;
   // Response times of a window still converging.
