@@ -146,7 +146,7 @@ std::size_t Engine::bytes() const {
   b += cap(e.lists.search) + cap(e.lists.x0) + cap(e.lists.y0) + e.resort.bytes();
   b += e.grid.bytes() + e.voidage.bytes() + e.pass.bytes() + e.lists.bytes() + e.springs.bytes() +
        e.next_springs.bytes();
-  b += e.integrator->bytes();
+  b += cap(e.allowance) + e.integrator->bytes();
   if (local_) b += local_->bytes();
   return b;
 }

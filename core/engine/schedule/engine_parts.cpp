@@ -114,7 +114,10 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
   // the carriers.
   lists.margin_per_grain = local && model.contact;
   lists.range = 1 + reach + model.skin;
-  if (local && model.contact) allowance.assign(n, HUGE_VAL);
+  // Without suspension contacts the members are the few grains at the walls and the bed: their
+  // boxes keep their radii, and ten million grains are spared 80 MB.
+  if (local && model.contact && (model.suspension_contacts || carried))
+    allowance.assign(n, HUGE_VAL);
 
   const Fluid& fluid = setup.fluid;
   IntegratorContext ctx;

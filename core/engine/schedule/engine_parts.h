@@ -73,9 +73,11 @@ struct EngineParts {
   // Whether free grains coast on windows of their own (the local stepper).
   bool local = false;
   // integrator.carried_fraction in effect (local steps with contacts): the lists' margins follow
-  // each member's carrier, and `allowance` holds, by sample index, the radius in which each
-  // member's box lets it move (the local stepper's; the integrator's step respects it).
+  // each member's carrier.
   bool carried = false;
+  // Local steps where grains meet, or carried steps: by sample index, the radius in which each
+  // member's box lets it move (its pace radius; the local stepper's, and the integrator's step
+  // respects it). Empty: every member's box allows its own radius.
   std::vector<double> allowance;
   double time = 0;
   EngineStats stats;

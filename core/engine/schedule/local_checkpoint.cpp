@@ -94,7 +94,7 @@ void LocalStepper::load(std::istream& in) {
   for (Lane& lane : lanes_) std::make_heap(lane.syncs.begin(), lane.syncs.end(), kLater);
   member_.assign(kind_.size(), kNoMember);
   index_members();
-  if (e_.model.contact)
+  if (paced())
     for (std::size_t k = 0; k < e_.state.size(); ++k) note_allowance(e_.state.origin[k], k);
   settled_ = std::size_t(std::count(kind_.begin(), kind_.end(), GrainKind::settled));
   e_.forces.stiffness.assign(e_.state.size(), 0.0);

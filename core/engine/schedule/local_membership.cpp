@@ -72,7 +72,7 @@ void LocalStepper::anchor(std::size_t k) {
   if (e_.model.contact)
     boxes_.set(id, member_box(k),
                box_tag(e_.state.frozen[k] ? GrainKind::frozen : GrainKind::moving));
-  if (e_.model.contact) note_allowance(id, k);
+  if (paced()) note_allowance(id, k);
 }
 
 // The radius in which member k's box lets it move, read off the box itself (so that a
@@ -96,7 +96,7 @@ Box LocalStepper::member_box(std::size_t k) const {
   // the step the fine grains set moved it a tenth of a radius, and such boxes held each other
   // on the common step. The step then keeps it within that pace (travel_in_step).
   const double steps = e_.setup.integrator.member_box_steps;
-  const double travel = steps > 0 ? e_.integrator->travel_in_step(e_.state, k) : 0.0;
+  const double travel = steps > 0 && paced() ? e_.integrator->travel_in_step(e_.state, k) : 0.0;
   if (travel > 0)
     pace = std::min(pace,
                     std::max(least_pace_, steps * travel / e_.setup.integrator.crossing_fraction));

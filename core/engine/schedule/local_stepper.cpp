@@ -252,7 +252,7 @@ void LocalStepper::step(double limit) {
       const std::uint32_t id = e_.state.origin[k];
       const double dx = e_.state.x[k] - member_track_[k].x;
       const double dy = e_.state.y[k] - member_track_[k].y;
-      const double pace = kReanchor * e_.allowance[id];
+      const double pace = kReanchor * (paced() ? e_.allowance[id] : 0.5 * e_.state.diameter[k]);
       if (dx * dx + dy * dy > pace * pace) wake_.push_back(id);
     }
     wake_around(kNoMember);

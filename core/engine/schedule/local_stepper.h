@@ -163,6 +163,8 @@ class LocalStepper {
   void index_members();
   Box member_box(std::size_t k) const;
   void note_allowance(std::uint32_t id, std::size_t k);
+  // Whether members' boxes have pace radii of their own (EngineParts::allowance).
+  bool paced() const { return !e_.allowance.empty(); }
   // Carried steps: lists rebuilt if stale, then the members' step chosen again (the step reads
   // the lists' pairs and margins).
   void fresh_step();
