@@ -88,9 +88,12 @@ std::string run_identity(Scene& scene) {
   Fnv f;
   f.add(scene_json(scene).dump());
   f.add(std::to_string(scene.sample.seed));
-  const auto threads = scene.integrator.threads > 0 ? std::int64_t(scene.integrator.threads)
-                                                    : std::int64_t(omp_get_max_threads());
-  f.add(std::to_string(threads));
+  const bool any_count = scene.integrator.method == "exponential" && scene.integrator.local_steps;
+  if (!any_count) {
+    const auto threads = scene.integrator.threads > 0 ? std::int64_t(scene.integrator.threads)
+                                                      : std::int64_t(omp_get_max_threads());
+    f.add(std::to_string(threads));
+  }
   f.add(SEDEM_VERSION);
   return f.hex();
 }
@@ -168,8 +171,8 @@ CheckpointRecord read_checkpoint_record(const fs::path& dir, const std::string& 
     if (r->identity != identity)
       throw CheckpointError(
           bin.string() +
-          " was written by another run (another scene, seed, thread count or version) than the "
-          "one run.json describes; it cannot be resumed");
+          " was written by another run (another scene, seed or version, or, without local "
+          "steps, thread count) than the one run.json describes; it cannot be resumed");
     return *r;
   }
   throw CheckpointError(bin.string() + " does not match " + json.string() +

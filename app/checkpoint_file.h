@@ -39,7 +39,9 @@ struct CheckpointRecord {
 };
 
 // The hash of everything that decides a run's results: the resolved scene (seed included),
-// the number of worker threads and sedem's version.
+// sedem's version, and the number of worker threads where it changes the bits (not with local
+// steps, which give the same results on any count: a run stopped on one machine goes on on
+// another with more or fewer cores).
 std::string run_identity(Scene& scene);
 
 // 64-bit FNV-1a of a file's bytes, as 16 hex digits.

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -374,6 +376,28 @@ TEST(Cli, InterruptedAndResumedRunEqualsAnUninterruptedOne) {
   auto again = test::run_sedem("run --resume " + parts.string());
   EXPECT_EQ(again.status, 0);
   EXPECT_NE(again.output.find("nothing to resume"), std::string::npos) << again.output;
+}
+
+// Local steps give the same bits on any thread count (tested in the engine's tests), so a run
+// stopped on one core goes on on two, as a job requeued on another machine would: it was
+// refused as "another run". (The demo's 1 500 grains step on one thread either way: this checks
+// the checkpoint's identity; the engine's tests resume two threads' checkpoints on one.)
+TEST(Cli, ARunStoppedOnOneCoreGoesOnOnTwo) {
+  const fs::path whole = kOut / "cores_whole", parts = kOut / "cores_parts";
+  fs::remove_all(whole);
+  fs::remove_all(parts);
+  setenv("OMP_NUM_THREADS", "2", 1);
+  EXPECT_EQ(test::run_sedem("run " + kShortSteps + " --out " + whole.string()).status, 0);
+  setenv("OMP_NUM_THREADS", "1", 1);
+  auto stopped = test::run_sedem("run " + kShortSteps + " --out " + parts.string() +
+                                 " 2>&1 & pid=$!; sleep 2; kill -INT $pid; wait $pid");
+  setenv("OMP_NUM_THREADS", "2", 1);
+  auto resumed = test::run_sedem("run --resume " + parts.string() + " --quiet");
+  unsetenv("OMP_NUM_THREADS");
+  EXPECT_EQ(stopped.status, 130) << "the run ended before it was interrupted: " << stopped.output;
+  EXPECT_EQ(resumed.status, 0) << resumed.output;
+  for (const char* file : {"readings_hydrometer.csv", "granulometry.csv", "particles.pvd"})
+    EXPECT_EQ(text_of(parts / file), text_of(whole / file)) << file;
 }
 
 // Particle files off: the readings so far are kept in the checkpoint, so that the run can

@@ -298,7 +298,7 @@ TEST(LocalSteps, WithoutSuspensionContactsResumesBitForBit) {
 // Without suspension contacts the syncs are taken lane by lane (one lane a column of voidage
 // cells) on the engine's threads: one thread and two give the same bits, with grains joining
 // the members at the walls and retiring onto the shared bed. A checkpoint taken
-// on two threads resumes on two to the same bits too.
+// on two threads resumes on two, and on one, to the same bits too.
 TEST(LocalSteps, WithoutSuspensionContactsLanesGiveTheSameBitsOnOneThreadOrTwo) {
   Scene scene = passing_scene();
   const double hw = scene.cylinder.half_width();
@@ -324,8 +324,11 @@ TEST(LocalSteps, WithoutSuspensionContactsLanesGiveTheSameBitsOnOneThreadOrTwo) 
   Engine resumed(engine_setup(test::on_threads(scene, 2)), sample_of(grains));
   resumed.load_checkpoint(checkpoint);
   for (int k = 11; k <= 20; ++k) resumed.advance_to(k);
-  for (const Engine* e : {&two, &resumed}) {
-    SCOPED_TRACE(e == &two ? "two threads" : "resumed on two threads");
+  Engine on_one(engine_setup(test::on_threads(scene, 1)), sample_of(grains));
+  on_one.load_checkpoint(checkpoint);
+  for (int k = 11; k <= 20; ++k) on_one.advance_to(k);
+  for (const Engine* e : {&two, &resumed, &on_one}) {
+    SCOPED_TRACE(e == &two ? "two threads" : (e == &resumed ? "resumed on two" : "resumed on one"));
     test::expect_same_bits(one.particles(), e->particles());
     EXPECT_EQ(e->stats().steps, one.stats().steps);
     EXPECT_EQ(e->stats().windows, one.stats().windows);
@@ -340,7 +343,8 @@ TEST(LocalSteps, WithoutSuspensionContactsLanesGiveTheSameBitsOnOneThreadOrTwo) 
 // Where grains meet everywhere the members' step (lists, integration, projection, and with
 // carried steps the step's choice) goes on the engine's threads when they are many
 // (core/engine/threads_for.h): a crowd of 4000 grains gives the same bits on one thread and two,
-// its members passing back and forth across the count where the second thread starts.
+// its members passing back and forth across the count where the second thread starts; a
+// checkpoint taken on two threads resumes on one to the same bits.
 TEST(LocalSteps, WithContactsEverywhereTheMembersStepGivesTheSameBitsOnOneThreadOrTwo) {
   for (const bool carried : {false, true}) {
     SCOPED_TRACE(carried ? "carried sub-steps" : "one rate");
@@ -359,14 +363,22 @@ TEST(LocalSteps, WithContactsEverywhereTheMembersStepGivesTheSameBitsOnOneThread
     ASSERT_EQ(one.threads(), 1);
     ASSERT_EQ(two.threads(), 2);
     std::size_t most = 0, least = grains.size();
+    std::stringstream checkpoint;  // taken on two threads while the second one works
     while (one.time() < 3) {
       one.step(3);
       two.step(3);
       ASSERT_EQ(one.time(), two.time()) << "step " << one.stats().steps;
       most = std::max(most, one.stats().members);
       least = std::min(least, one.stats().members);
+      if (two.stats().members >= kThreadedFrom && checkpoint.str().empty())
+        two.save_checkpoint(checkpoint);
     }
     test::expect_same_bits(one.particles(), two.particles());
+    // A run stopped on two threads goes on on one (a machine with fewer cores) to the same bits.
+    Engine resumed(engine_setup(test::on_threads(scene, 1)), sample_of(grains));
+    resumed.load_checkpoint(checkpoint, "two threads' checkpoint");
+    while (resumed.time() < 3) resumed.step(3);
+    test::expect_same_bits(one.particles(), resumed.particles());
     EXPECT_EQ(two.stats().steps, one.stats().steps);
     EXPECT_EQ(two.stats().particle_steps, one.stats().particle_steps);
     EXPECT_GE(most, kThreadedFrom) << "the second thread never started";
