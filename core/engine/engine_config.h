@@ -39,8 +39,9 @@ struct IntegratorConfig {
   // sub-steps of their own within the step
   bool carried_substeps = false;
   double max_coast = 60.0;  // s, longest window of a coasting grain
-  // local steps: a member's box allows this many of the last step's travel where its own radii
-  // would reach further than a fiftieth of the mean spacing (0: its own radii)
+  // local steps: where a member's radius is more than a fiftieth of the mean spacing, its box's
+  // pace radius is this many times its travel in the last step over crossing_fraction, if that
+  // is less (0: its own radius)
   double member_box_steps = 4;
   bool freeze_settled = true;  // freeze resting particles below every instrument
   bool retire_below = true;    // local steps: grains below every instrument land analytically

@@ -287,8 +287,8 @@ void check_scene(const Scene& scene, const SceneOrigins& origins) {
   const double box_steps = scene.integrator.member_box_steps;
   if (box_steps != 0 && !(box_steps >= 2))
     check.fail("integrator.member_box_steps",
-               "must be 0 (boxes of 2 radii) or at least 2 (below 2 a step could not grow "
-               "past the one before it)");
+               "must be 0 (boxes of 2 radii) or at least 2 (below 2 the step grows back too "
+               "slowly after a pushed grain leaves; at 1 it could never grow)");
   check_instruments(scene, check);
   check_sampled_volumes(scene, origins, check);
   check_coasting(scene, check);

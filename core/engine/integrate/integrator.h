@@ -76,9 +76,9 @@ struct IntegratorContext {
   // contact slowed may fall free within the step), not only the unsupported ones.
   bool members_only = false;
   // Local steps: by sample index, the radius in which each member's box lets it move (its
-  // pace; empty: no bound, the global scheme): a step lets a member travel crossing_fraction of
-  // it. Carried steps (integrator.carried_fraction > 0): also the sample's diameters. Both are
-  // owned by the engine.
+  // pace; empty: its own radius, as in the global scheme and without suspension contacts): a
+  // step lets a member travel crossing_fraction of it. Carried steps (integrator.carried_fraction >
+  // 0): also the sample's diameters. Both are owned by the engine.
   bool carried_steps = false;
   const std::vector<double>* sample_diameter = nullptr;
   const std::vector<double>* allowance = nullptr;
