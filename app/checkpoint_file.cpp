@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/run_record.h"
+#include "core/run/stage_setups.h"
 
 namespace sedem::app {
 namespace fs = std::filesystem;
@@ -88,8 +89,7 @@ std::string run_identity(Scene& scene) {
   Fnv f;
   f.add(scene_json(scene).dump());
   f.add(std::to_string(scene.sample.seed));
-  const bool any_count = scene.integrator.method == "exponential" && scene.integrator.local_steps;
-  if (!any_count) {
+  if (!takes_local_steps(engine_setup(scene))) {
     const auto threads = scene.integrator.threads > 0 ? std::int64_t(scene.integrator.threads)
                                                       : std::int64_t(omp_get_max_threads());
     f.add(std::to_string(threads));

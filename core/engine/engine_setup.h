@@ -21,4 +21,11 @@ struct EngineSetup {
   double end_time = 60.0;        // s: a checkpoint past it is damaged
 };
 
+// Whether the engine takes local steps: integrator.local_steps with the exponential integrator,
+// and no lubrication (it needs the force pass). Their results are the same on any thread count.
+inline bool takes_local_steps(const EngineSetup& setup) {
+  return integrator_method(setup.integrator) == IntegratorMethod::exponential &&
+         setup.integrator.local_steps && !setup.forces.lubrication;
+}
+
 }  // namespace sedem

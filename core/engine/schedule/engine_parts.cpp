@@ -65,8 +65,7 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
   // its own, the lanes go on the engine's threads (local_lanes.cpp), and the few members' step
   // has one. The voidage of the local steps changes a grain at a time, serially; its first
   // count is serial too, as a sum over threads would round differently on each thread count.
-  local = integrator_method(setup.integrator) == IntegratorMethod::exponential &&
-          setup.integrator.local_steps && !model.lubrication;
+  local = takes_local_steps(setup);
   if (local && (!model.contact || !model.suspension_contacts)) {
     sync_threads = threads;
     threads = 1;
