@@ -251,6 +251,7 @@ std::vector<ScaleRow> run_scale_bench(const ScaleOptions& options, std::FILE* ta
         r.steps = run.stats.steps;
         r.list_builds = run.stats.list_builds;
         r.widened_rows = run.stats.widened_rows;
+        r.box_moves = run.stats.box_moves;
         r.particle_steps = run.stats.particle_steps;
         r.engine_peak_bytes = run.peak_engine_bytes;
         r.error_hydrometer = test_error(run.results, "hydrometer");
@@ -295,7 +296,7 @@ void write_scale_csv(const std::vector<ScaleRow>& rows, const fs::path& file) {
   out << ",members_per_step,contacts_per_step";
   span_pair_header(out, "pushed_per_step", "unpushed_steps");
   span_pair_header(out, "fast_per_step", "substeps_per_split_step");
-  out << ",widened_rows\n";
+  out << ",widened_rows,box_moves\n";
   for (const auto& r : rows) {
     const double n = double(std::max<std::size_t>(r.particles, 1));
     out << field(r.label) << ',' << field(r.sample) << ',' << r.status << ','
@@ -321,7 +322,7 @@ void write_scale_csv(const std::vector<ScaleRow>& rows, const fs::path& file) {
       out << ',' << r.spans.back().members << ',' << r.spans.back().contacts;
     span_pair(out, r, &ScaleSpan::pushed, &ScaleSpan::unpushed_steps);
     span_pair(out, r, &ScaleSpan::fast, &ScaleSpan::substeps);
-    out << ',' << r.widened_rows << '\n';
+    out << ',' << r.widened_rows << ',' << r.box_moves << '\n';
   }
   if (!out.flush()) throw std::runtime_error("cannot write " + file.string());
 }

@@ -59,6 +59,7 @@ struct ScaleRow {
   double sample_build_s = 0;  // building the sample, before that
   double cpu_s = 0;           // the process's CPU time (user + system) over both, every thread
   std::int64_t steps = 0, list_builds = 0, widened_rows = 0;
+  std::int64_t box_moves = 0;  // members' boxes moved on (local steps)
   double particle_steps = 0;
   std::size_t engine_peak_bytes = 0;  // largest Engine::bytes() seen at the readings
   std::size_t rss_start_bytes = 0;    // the process's resident memory before the run

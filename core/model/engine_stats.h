@@ -17,8 +17,9 @@ struct EngineStats {
   std::int64_t widened_rows = 0;  // rows added for grains whose search widened (carried steps)
   // Local time stepping: coasting windows taken, and grains that left or joined the common step.
   std::int64_t windows = 0, engaged = 0, released = 0;
-  std::size_t members = 0;  // grains on the common step at the last step (frozen included)
-  std::size_t retired = 0;  // grains that fell below every instrument onto the coarse bed
+  std::int64_t box_moves = 0;  // moving members' boxes moved on, having used their allowance
+  std::size_t members = 0;     // grains on the common step at the last step (frozen included)
+  std::size_t retired = 0;     // grains that fell below every instrument onto the coarse bed
   // What set the last step (local steps; docs/engine.md): the members a coarser grain pushed
   // faster than 3 times their settling speed, and the step the others alone would have allowed
   // (s; 0 where not known).

@@ -156,6 +156,9 @@ TEST(ScaleBench, ReportsTheFirstMinuteApart) {
   EXPECT_EQ(row.at("fast_per_step_to_60"), "0");
   EXPECT_EQ(row.at("substeps_per_split_step"), "0");
   EXPECT_EQ(row.at("fast_per_step_to_600"), "");
+  // The demo's members move: their boxes moved on, as many times as the stats say.
+  EXPECT_GT(rows[0].box_moves, 0);
+  EXPECT_EQ(std::stoll(row.at("box_moves")), rows[0].box_moves);
 }
 
 // Watching every step changes nothing: the same steps, the same readings, the same particles

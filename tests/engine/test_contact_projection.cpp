@@ -1,6 +1,6 @@
 // The contact projection's islands: particles linked by constraints move only each other, so an
 // island comes out of a step exactly as it would alone, however long a far-away pile keeps its
-// own island sweeping.
+// own island sweeping, and the pile as it would alone, though the sweeps then visit it only.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -84,6 +84,15 @@ TEST(ContactProjection, AnIslandComesOutAsItWouldAlone) {
   for (std::size_t i = 0; i < 3; ++i) {
     EXPECT_EQ(alone.x[i], together.x[i]) << "grain " << i;
     EXPECT_EQ(alone.y[i], together.y[i]) << "grain " << i;
+  }
+  // The chain, swept on after the triangle converged (the sweeps then visit only its
+  // constraints and grains), comes out as it would alone too.
+  Grains chain;
+  add_chain(chain);
+  const Grains chain_alone = project(chain);
+  for (std::size_t i = 0; i < chain.x.size(); ++i) {
+    EXPECT_EQ(chain_alone.x[i], together.x[3 + i]) << "chain grain " << i;
+    EXPECT_EQ(chain_alone.y[i], together.y[3 + i]) << "chain grain " << i;
   }
   // The triangle was pushed apart, and the chain too.
   const Grains start = triangle();

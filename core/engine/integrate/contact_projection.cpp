@@ -39,8 +39,9 @@ std::size_t ContactProjection::bytes() const {
   std::size_t b = 0;
   for (const auto& f : found_) b += f.capacity() * sizeof(Constraint);
   b += constraints_.capacity() * sizeof(Constraint) + incidences_.capacity() * sizeof(Incidence);
-  for (const auto* v : {&particle_, &count_, &first_, &slot_of_, &held_list_, &island_of_slot_,
-                        &island_of_constraint_})
+  for (const auto* v :
+       {&particle_, &count_, &first_, &slot_of_, &held_list_, &island_of_slot_,
+        &island_of_constraint_, &active_constraints_, &active_slots_, &active_islands_})
     b += v->capacity() * 4;
   b += islands_.bytes();
   for (const auto* v : {&mobility_, &response_, &moved_x_, &moved_y_, &excess_, &island_worst_})
@@ -256,11 +257,37 @@ void ContactProjection::find_islands() {
 // one island alone would).
 bool ContactProjection::mark_converged() {
   bool all = true;
-  for (std::size_t i = 0; i < island_worst_.size(); ++i) {
+  auto mark = [&](std::size_t i) {
     if (island_worst_[i] < kTolerance) converged_[i] = 1;
     all = all && converged_[i];
-  }
+  };
+  if (narrowed_)
+    for (std::uint32_t i : active_islands_) mark(i);
+  else
+    for (std::size_t i = 0; i < island_worst_.size(); ++i) mark(i);
   return all;
+}
+
+// A converged island stays as it is until the last sweep (which visits every constraint
+// again), so leaving it out of the lists changes nothing but the time.
+void ContactProjection::narrow() {
+  auto keep_unconverged = [&](std::vector<std::uint32_t>& list, std::size_t all,
+                              const std::uint32_t* island) {
+    if (!narrowed_) {
+      list.clear();
+      for (std::uint32_t k = 0; k < all; ++k)
+        if (!converged_[island ? island[k] : k]) list.push_back(k);
+      return;
+    }
+    std::size_t kept = 0;
+    for (std::uint32_t k : list)
+      if (!converged_[island ? island[k] : k]) list[kept++] = k;
+    list.resize(kept);
+  };
+  keep_unconverged(active_constraints_, constraints_.size(), island_of_constraint_.data());
+  keep_unconverged(active_slots_, particle_.size(), island_of_slot_.data());
+  keep_unconverged(active_islands_, converged_.size(), nullptr);
+  narrowed_ = true;
 }
 
 double ContactProjection::friction_change(Constraint& c, const EngineState& s, double dx, double dy,
@@ -297,7 +324,12 @@ void ContactProjection::sweep(EngineState& s, Mode mode) {
     force += dl;
     return solving ? dl : force;
   };
-  const std::size_t constraints = constraints_.size(), slots = particle_.size();
+  // Solving after narrow(), only the islands not yet converged (their lists, in order).
+  const bool narrowed = solving && narrowed_;
+  const std::uint32_t* only_constraints = narrowed ? active_constraints_.data() : nullptr;
+  const std::uint32_t* only_slots = narrowed ? active_slots_.data() : nullptr;
+  const std::size_t constraints = narrowed ? active_constraints_.size() : constraints_.size();
+  const std::size_t slots = narrowed ? active_slots_.size() : particle_.size();
   const bool parallel = threads_ > 1 && constraints >= kParallelFrom;
   // Solving, the islands already converged stay as they are, and each of the others gets the
   // largest excess of its constraints: on one thread directly, on several through the
@@ -307,7 +339,10 @@ void ContactProjection::sweep(EngineState& s, Mode mode) {
   const std::uint32_t* island_of_slot = island_of_slot_.data();
   double* excess = excess_.data();
   double* island_worst = island_worst_.data();
-  if (solving) std::fill(island_worst_.begin(), island_worst_.end(), 0.0);
+  if (narrowed)
+    for (std::uint32_t i : active_islands_) island_worst[i] = 0;
+  else if (solving)
+    std::fill(island_worst_.begin(), island_worst_.end(), 0.0);
   auto note = [&](std::size_t k, double e) {
     if (parallel)
       excess[k] = e;
@@ -317,7 +352,8 @@ void ContactProjection::sweep(EngineState& s, Mode mode) {
 #pragma omp parallel num_threads(threads_) if (parallel)
   {
 #pragma omp for schedule(static)
-    for (std::size_t k = 0; k < constraints; ++k) {
+    for (std::size_t i = 0; i < constraints; ++i) {
+      const std::size_t k = only_constraints ? only_constraints[i] : i;
       Constraint& c = constraints_[k];
       c.mx = c.my = c.mt = 0;
       if (done && done[island[k]]) continue;
@@ -361,7 +397,8 @@ void ContactProjection::sweep(EngineState& s, Mode mode) {
       }
     }
 #pragma omp for schedule(static)
-    for (std::size_t k = 0; k < slots; ++k) {
+    for (std::size_t i = 0; i < slots; ++i) {
+      const std::size_t k = only_slots ? only_slots[i] : i;
       if (done && done[island_of_slot[k]]) continue;
       const double w = mobility_[k];
       double dx = 0, dy = 0, torque = 0;
@@ -386,8 +423,10 @@ void ContactProjection::sweep(EngineState& s, Mode mode) {
     }
   }
   if (solving && parallel)
-    for (std::size_t k = 0; k < constraints; ++k)
+    for (std::size_t i = 0; i < constraints; ++i) {
+      const std::size_t k = only_constraints ? only_constraints[i] : i;
       if (!done[island[k]]) island_worst[island[k]] = std::max(island_worst[island[k]], excess[k]);
+    }
 }
 
 void ContactProjection::keep(const EngineState& s, const std::uint8_t* aside) {
@@ -488,10 +527,13 @@ ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid
     // Sweeps until every overlap is within kTolerance of the smaller radius of its compliant
     // target (checked at the positions each sweep starts from), at most sweeps_, each island
     // until its own are; then one more over all, whose forces are kept for the next step.
+    narrowed_ = false;
     for (int k = 0; k < sweeps_; ++k) {
       sweep(s, Mode::solve);
       if (mark_converged()) break;
+      narrow();
     }
+    narrowed_ = false;
     std::fill(converged_.begin(), converged_.end(), 0);
     sweep(s, Mode::solve);
     keep(s, aside);

@@ -146,6 +146,8 @@ class ContactProjection {
   void find_islands();
   // After a solving sweep: marks the islands it found converged; true once all are.
   bool mark_converged();
+  // Keeps in the active lists only the constraints, participants and islands not converged.
+  void narrow();
   void keep(const EngineState& s, const std::uint8_t* aside);
 
   ForceModel model_;
@@ -170,6 +172,11 @@ class ContactProjection {
   std::vector<std::uint32_t> island_of_slot_, island_of_constraint_;
   std::vector<double> excess_, island_worst_;
   std::vector<std::uint8_t> converged_;
+  // While narrowed_, the solving sweeps visit only these: the islands not yet converged and
+  // their constraints and participants, in order. At a million grains a step's sweeps ran on
+  // while one pile needed them, and 95 % of the constraints they visited were converged.
+  std::vector<std::uint32_t> active_constraints_, active_slots_, active_islands_;
+  bool narrowed_ = false;
   DisjointSets islands_;            // find_islands' union-find over slots
   std::vector<std::uint8_t> held_;  // per particle (sample order): had a force last step
   std::vector<std::uint32_t> held_list_;

@@ -253,7 +253,9 @@ void LocalStepper::step(double limit) {
       const double dx = e_.state.x[k] - member_track_[k].x;
       const double dy = e_.state.y[k] - member_track_[k].y;
       const double pace = kReanchor * (paced() ? e_.allowance[id] : 0.5 * e_.state.diameter[k]);
-      if (dx * dx + dy * dy > pace * pace) wake_.push_back(id);
+      if (dx * dx + dy * dy <= pace * pace) continue;
+      wake_.push_back(id);
+      ++e_.stats.box_moves;
     }
     wake_around(kNoMember);
     if (e_.freeze.due(e_.stats.steps)) {
