@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 namespace sedem {
 
@@ -42,7 +43,7 @@ FreeFlight LocalStepper::flight_of(std::uint32_t id, const FreeFlight::Point& p)
 // its own crossing time (and nothing was changed; `needed`, if given, is then the box of that
 // shortest window).
 bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit,
-                         Box* needed) {
+                         Box* needed, std::uint32_t* blocker) {
   const FreeFlight f = flight_of(id, p);
   const double r = 0.5 * e_.sample.particles.diameter[id], pad = r * (1 + kSkin);
   const double hw = e_.model.half_width;
@@ -81,22 +82,46 @@ bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p,
   if (speed > 0) window = std::min(window, travel_ / speed);
   const double shortest =
       speed > 0 ? std::min(window, e_.setup.integrator.crossing_fraction * r / speed) : window;
-  lane.near.clear();
   const Box longest = box(window);
+  // Every window the loop below tries, against `near`; the first clear one is taken. False:
+  // none is, and `in_way` is what stood in the last one's way (kNoMember: a wall).
+  std::uint32_t in_way = kNoMember;
+  auto first_clear = [&](std::span<const std::uint32_t> near, double& clear_w, Box& clear_b) {
+    for (double w = window; w >= shortest; w *= 0.5) {
+      const Box b = w == window ? longest : box(w);
+      in_way = kNoMember;
+      if (b.x0 <= -hw || b.x1 >= hw || b.y0 <= 0) continue;
+      for (std::uint32_t j : near)
+        if (b.overlaps(boxes_.box(j))) {
+          in_way = j;
+          break;
+        }
+      if (in_way == kNoMember) {
+        clear_w = w;
+        clear_b = b;
+        return true;
+      }
+    }
+    return false;
+  };
+  double w = 0;
+  Box b;
+  // A member that failed to leave mostly fails again for the same neighbour: if that one's
+  // box (which the query would find: it meets the longest window's) is in every window's way,
+  // the answer is known without the query, exactly.
+  if (blocker && *blocker != kNoMember && *blocker != id && boxes_.has(*blocker) &&
+      !passes(*blocker) && boxes_.box(*blocker).overlaps(longest)) {
+    if (!first_clear({blocker, 1}, w, b)) {
+      if (needed) *needed = box(shortest);
+      return false;
+    }
+  }
+  lane.near.clear();
   boxes_.overlapping(longest, id, [&](std::uint32_t j) {
     if (!passes(j)) lane.near.push_back(j);
   });
-  for (double w = window; w >= shortest; w *= 0.5) {
-    const Box b = w == window ? longest : box(w);
-    if (b.x0 <= -hw || b.x1 >= hw || b.y0 <= 0) continue;
-    bool clear = true;
-    for (std::uint32_t j : lane.near)
-      if (b.overlaps(boxes_.box(j))) {
-        clear = false;
-        break;
-      }
-    if (clear) return take(w, b);
-  }
+  if (first_clear(lane.near, w, b)) return take(w, b);
+  if (blocker) *blocker = in_way;
   if (needed) *needed = box(shortest);
   return false;
 }

@@ -47,10 +47,11 @@ void LocalStepper::wake_around(std::uint32_t first) {
     anchor(k);
     if (e_.state.frozen[k]) continue;
     found.clear();
-    boxes_.overlapping(boxes_.box(id), id, [&](std::uint32_t j) {
-      if ((kind_[j] == GrainKind::coasting && !passes(j)) || kind_[j] == GrainKind::settled)
-        found.push_back(j);
-    });
+    boxes_.overlapping(
+        boxes_.box(id), id, [&](std::uint32_t j) { found.push_back(j); },
+        [&](std::uint32_t j) {
+          return (kind_[j] == GrainKind::coasting && !passes(j)) || kind_[j] == GrainKind::settled;
+        });
     std::sort(found.begin(), found.end());
     const Box reach = boxes_.box(id);
     for (std::uint32_t j : found) {
@@ -139,7 +140,7 @@ void LocalStepper::release_members() {
     // A window of one crossing time is enough: requiring four cut the churn of grains leaving
     // and rejoining, but kept settling grains on the common step and let a spreading pile's
     // overlaps reach 0.7 of a radius (DensePileHasNoDeepOverlap).
-    if (!coast(id, e_.time, p, true)) continue;
+    if (!coast(id, e_.time, p, true, nullptr, &blocker_[id])) continue;
     remove_member(k);
     member_[id] = kNoMember;
     ++e_.stats.released;
@@ -157,9 +158,9 @@ void LocalStepper::settle_members() {
   std::sort(frozen.begin(), frozen.end());
   for (std::uint32_t id : frozen) {
     bool reachable = false;
-    boxes_.overlapping(boxes_.box(id), id, [&](std::uint32_t j) {
-      reachable = reachable || kind_[j] == GrainKind::moving;
-    });
+    boxes_.overlapping(
+        boxes_.box(id), id, [&](std::uint32_t) { reachable = true; },
+        [&](std::uint32_t j) { return !reachable && kind_[j] == GrainKind::moving; });
     if (reachable) continue;
     const std::size_t k = member_[id];
     track_[id].flight = FreeFlight{e_.state.x[k], e_.state.y[k], 0, 0, 0, 0, 0};

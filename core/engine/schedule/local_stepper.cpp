@@ -35,6 +35,7 @@ LocalStepper::LocalStepper(EngineParts& parts) : e_(parts) {
   least_pace_ = kLeastPace * spacing;
   land_y_.assign(n, 0.0);
   ahead_slot_.assign(n, kNoMember);
+  blocker_.assign(n, kNoMember);
   widened_.clear();
   bed_column_ = std::max(dmax, 1e-9);
   bed_.assign(std::max<std::size_t>(1, std::size_t(std::ceil(2 * cyl.half_width() / bed_column_))),
@@ -323,7 +324,8 @@ std::size_t LocalStepper::bytes() const {
   for (const Lane& l : lanes_)
     lane_bytes += cap(l.syncs) + cap(l.near) + cap(l.failed) + cap(l.leaving);
   return cap(kind_) + cap(track_) + cap(member_) + cap(wake_) + boxes_.bytes() + cap(land_y_) +
-         cap(bed_) + cap(ahead_slot_) + cap(ahead_) + cap(widened_) + cap(leaving_) + lane_bytes;
+         cap(bed_) + cap(ahead_slot_) + cap(blocker_) + cap(ahead_) + cap(widened_) +
+         cap(leaving_) + lane_bytes;
 }
 
 }  // namespace sedem

@@ -144,8 +144,10 @@ class LocalStepper {
   double idle_horizon(double target);
   void count_lanes();
   // Coasting and syncs (local_coasting.cpp).
+  // `blocker`, if given: in, a grain whose box may still be in every window's way (checked
+  // first, exactly: then no query is made); out, the one in the shortest window's way.
   bool coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit,
-             Box* needed = nullptr);
+             Box* needed = nullptr, std::uint32_t* blocker = nullptr);
   bool make_room(std::uint32_t id, double t, const FreeFlight::Point& p);
   void note_ahead(std::uint32_t id, double t, const Box& before, double t0_before);
   bool resync_clear_of(std::uint32_t id, const Box& reach);
@@ -235,6 +237,9 @@ class LocalStepper {
   };
   std::vector<Ahead> ahead_;               // synced within this step, with the box they had
   std::vector<std::uint32_t> ahead_slot_;  // per grain: its latest entry in ahead_
+  // Per grain: the one whose box kept it from leaving the members at its last try (a hint:
+  // kept in no checkpoint, it changes no result).
+  std::vector<std::uint32_t> blocker_;
   std::vector<Ahead> widened_;  // synced ahead of a shortened step: boxes to narrow later
   struct Room {
     std::uint32_t id;
