@@ -83,8 +83,9 @@ bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p,
   const double shortest =
       speed > 0 ? std::min(window, e_.setup.integrator.crossing_fraction * r / speed) : window;
   const Box longest = box(window);
-  // Every window the loop below tries, against `near`; the first clear one is taken. False:
-  // none is, and `in_way` is what stood in the last one's way (kNoMember: a wall).
+  // Tries the windows longest first, halving down to the shortest, against the boxes of `near`;
+  // true with the first clear one. False: none is, and `in_way` is what stood in the last
+  // (shortest) one's way (kNoMember: a wall).
   std::uint32_t in_way = kNoMember;
   auto first_clear = [&](std::span<const std::uint32_t> near, double& clear_w, Box& clear_b) {
     for (double w = window; w >= shortest; w *= 0.5) {
