@@ -26,14 +26,7 @@ void BoxRegistry::erase(std::uint32_t id) {
   long c0, c1, r0, r1;
   span(box_[id], c0, c1, r0, r1);
   for (long r = r0; r <= r1; ++r)
-    for (long c = c0; c <= c1; ++c) {
-      auto& cell = cells_[std::size_t(r * columns_ + c)];
-      const auto at = std::find(cell.begin(), cell.end(), id);
-      if (at != cell.end()) {
-        *at = cell.back();
-        cell.pop_back();
-      }
-    }
+    for (long c = c0; c <= c1; ++c) cells_[std::size_t(r * columns_ + c)].erase(id);
 }
 
 void BoxRegistry::set(std::uint32_t id, const Box& box, std::uint8_t kind) {
@@ -60,9 +53,9 @@ void BoxRegistry::clear(std::uint32_t id) {
 }
 
 std::size_t BoxRegistry::bytes() const {
-  std::size_t b = box_.capacity() * sizeof(Box) + kind_.capacity() +
-                  cells_.capacity() * sizeof(std::vector<std::uint32_t>);
-  for (const auto& c : cells_) b += c.capacity() * sizeof(std::uint32_t);
+  std::size_t b =
+      box_.capacity() * sizeof(Box) + kind_.capacity() + cells_.capacity() * sizeof(Cell);
+  for (const Cell& c : cells_) b += c.more.capacity() * sizeof(std::uint32_t);
   return b;
 }
 
