@@ -92,6 +92,7 @@ class BoxRegistry {
       for (std::uint32_t i = here; i < n; ++i) f(more[i - kInline]);
     }
   };
+  static_assert(sizeof(Cell) == 64, "kInline is chosen to fill one cache line");
 
   long column(double x) const {
     const long c = long((x + half_width_) * inverse_cell_);
