@@ -6,6 +6,8 @@
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/engine/state/checkpoint_io.h"
 
@@ -87,11 +89,11 @@ void LocalStepper::load(std::istream& in) {
       if (kinds[id] != BoxRegistry::kNone) boxes_.set(id, boxes[id], kinds[id]);
   }
   // A coasting grain's lane is the column it was synced in, where its window starts.
-  for (Lane& lane : lanes_) lane.syncs.clear();
+  std::vector<std::vector<Sync>> due(lanes_.size());
   for (std::uint32_t id = 0; id < kind_.size(); ++id)
     if (kind_[id] == GrainKind::coasting)
-      lanes_[lane_of(track_[id].flight.x)].syncs.emplace_back(track_[id].t1, id);
-  for (Lane& lane : lanes_) std::make_heap(lane.syncs.begin(), lane.syncs.end(), kLater);
+      due[lane_of(track_[id].flight.x)].emplace_back(track_[id].t1, id);
+  for (std::size_t l = 0; l < lanes_.size(); ++l) lanes_[l].syncs.assign(std::move(due[l]));
   member_.assign(kind_.size(), kNoMember);
   index_members();
   if (paced())

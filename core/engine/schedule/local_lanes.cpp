@@ -22,13 +22,11 @@ namespace sedem {
 // their time comes: past 1.25 times the lane's entries at the last clean-up, the stale ones go
 // (the heap pops in the same order either way: entries compare by time, then id).
 void LocalStepper::push_sync(Lane& lane, double t, std::uint32_t id) {
-  lane.syncs.emplace_back(t, id);
-  std::push_heap(lane.syncs.begin(), lane.syncs.end(), kLater);
+  lane.syncs.push(t, id);
   if (lane.syncs.size() <= lane.clean_at) return;
-  std::erase_if(lane.syncs, [&](const Sync& e) {
+  lane.syncs.erase_if([&](const Sync& e) {
     return kind_[e.second] != GrainKind::coasting || track_[e.second].t1 != e.first;
   });
-  std::make_heap(lane.syncs.begin(), lane.syncs.end(), kLater);
   lane.clean_at = lane.syncs.size() + lane.syncs.size() / 4 + 1024;
 }
 
@@ -39,8 +37,7 @@ void LocalStepper::take_lane(std::size_t l, double target) {
   const Particles& s = e_.sample.particles;
   while (!lane.syncs.empty() && lane.syncs.front().first <= target) {
     const auto [t, id] = lane.syncs.front();
-    std::pop_heap(lane.syncs.begin(), lane.syncs.end(), kLater);
-    lane.syncs.pop_back();
+    lane.syncs.pop();
     prefetch_next(lane.syncs);
     if (kind_[id] != GrainKind::coasting || track_[id].t1 != t) continue;  // stale
     const FreeFlight::Point p = track_[id].flight.at(t - track_[id].t0);
@@ -74,7 +71,7 @@ void LocalStepper::take_lanes(double target) {
     // syncing together, between rounds that take none). Which thread takes a lane changes no
     // result.
     std::size_t lanes_due = 0;
-    for (const Lane& lane : lanes_)
+    for (Lane& lane : lanes_)
       lanes_due += !lane.syncs.empty() && lane.syncs.front().first <= target;
     if (lane_threads_ > 1 && (recent_syncs_ >= kThreadedSyncs || 2 * lanes_due >= lanes_.size())) {
 #pragma omp parallel for schedule(static) num_threads(lane_threads_)
@@ -115,7 +112,7 @@ void LocalStepper::take_lanes(double target) {
       if (!coast(g.id, g.t, g.at, true)) failed_.push_back(g.id);
     }
     // A grain that crossed into another lane may be due again before the target there.
-    const bool due = std::any_of(lanes_.begin(), lanes_.end(), [&](const Lane& lane) {
+    const bool due = std::any_of(lanes_.begin(), lanes_.end(), [&](Lane& lane) {
       return !lane.syncs.empty() && lane.syncs.front().first <= target;
     });
     if (!due) return;
@@ -124,24 +121,11 @@ void LocalStepper::take_lanes(double target) {
 
 // With no member moving, a step would take every sync due within max_step_s: the step ends
 // instead where some lane has taken its share of kIdleStepSyncs (a step is the engine's unit of
-// stopping). The entries looked at go back; syncs at the horizon's time are all taken.
+// stopping). Syncs at the horizon's time are all taken.
 double LocalStepper::idle_horizon(double target) {
   const std::size_t share = std::max<std::size_t>(1, kIdleStepSyncs / lanes_.size());
   double horizon = target;
-  std::vector<Sync>& looked = looked_;
-  for (Lane& lane : lanes_) {
-    looked.clear();
-    while (looked.size() < share && !lane.syncs.empty() && lane.syncs.front().first <= horizon) {
-      looked.push_back(lane.syncs.front());
-      std::pop_heap(lane.syncs.begin(), lane.syncs.end(), kLater);
-      lane.syncs.pop_back();
-    }
-    if (looked.size() == share) horizon = std::min(horizon, looked.back().first);
-    for (const Sync& e : looked) {
-      lane.syncs.push_back(e);
-      std::push_heap(lane.syncs.begin(), lane.syncs.end(), kLater);
-    }
-  }
+  for (Lane& lane : lanes_) horizon = lane.syncs.nth_time(share, horizon);
   return horizon;
 }
 

@@ -102,7 +102,7 @@ void LocalStepper::step(double limit) {
   std::size_t ahead_looked = 0;
   std::size_t idle_syncs = 0;
   double last_sync = e_.time;
-  std::vector<Sync>& syncs = lanes_[0].syncs;
+  SyncQueue& syncs = lanes_[0].syncs;
   bool first_round = true;
   for (;;) {
     failed_.clear();
@@ -117,8 +117,7 @@ void LocalStepper::step(double limit) {
       const auto [t, id] = syncs.front();
       last_sync = t;
       ++idle_syncs;
-      std::pop_heap(syncs.begin(), syncs.end(), kLater);
-      syncs.pop_back();
+      syncs.pop();
       prefetch_next(syncs);
       if (kind_[id] != GrainKind::coasting || track_[id].t1 != t) continue;  // engaged since: stale
       const FreeFlight::Point p = track_[id].flight.at(t - track_[id].t0);
@@ -322,7 +321,7 @@ std::size_t LocalStepper::bytes() const {
   auto cap = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   std::size_t lane_bytes = cap(lanes_);
   for (const Lane& l : lanes_)
-    lane_bytes += cap(l.syncs) + cap(l.near) + cap(l.failed) + cap(l.leaving);
+    lane_bytes += l.syncs.bytes() + cap(l.near) + cap(l.failed) + cap(l.leaving);
   return cap(kind_) + cap(track_) + cap(member_) + cap(wake_) + boxes_.bytes() + cap(land_y_) +
          cap(bed_) + cap(ahead_slot_) + cap(blocker_) + cap(ahead_) + cap(widened_) +
          cap(leaving_) + lane_bytes;

@@ -58,6 +58,7 @@
 #include "core/engine/integrate/free_flight.h"
 #include "core/engine/schedule/engine_parts.h"
 #include "core/engine/schedule/grain_kind.h"
+#include "core/engine/schedule/sync_queue.h"
 #include "core/model/particles.h"
 
 namespace sedem {
@@ -110,8 +111,7 @@ class LocalStepper {
   // Area fraction of the coarse bed (discs packed at random).
   static constexpr double kBedPacking = 0.8;
   static constexpr std::uint32_t kNoMember = 0xFFFFFFFF;
-  using Sync = std::pair<double, std::uint32_t>;
-  static constexpr auto kLater = std::greater<Sync>{};
+  using Sync = SyncQueue::Sync;
   // Syncs one step takes at most while no member moves: the step then ends at the last one
   // taken. A step is the engine's unit of stopping, and with every grain coasting on short
   // windows (integrator.max_coast_s) one max_step_s could hold 1e8 syncs and minutes of work.
@@ -120,8 +120,8 @@ class LocalStepper {
   // The syncs of one lane: a column of voidage cells where the free grains pass each other,
   // every grain where they meet (local_lanes.cpp).
   struct Lane {
-    std::vector<Sync> syncs;            // min-heap of (t1, id)
-    std::size_t clean_at = 1024;        // heap size past which its stale entries go
+    SyncQueue syncs;                    // (t1, id), earliest first
+    std::size_t clean_at = 1024;        // queue size past which its stale entries go
     std::vector<std::uint32_t> near;    // scratch of coast
     std::vector<std::uint32_t> failed;  // could not coast on: to join the members
     struct Leaving {
@@ -206,7 +206,7 @@ class LocalStepper {
     __builtin_prefetch(&t->deposit_cell);
     __builtin_prefetch(&kind_[id]);
   }
-  void prefetch_next(const std::vector<Sync>& syncs) const {
+  void prefetch_next(SyncQueue& syncs) const {
     if (!syncs.empty()) prefetch_grain(syncs.front().second);
   }
   std::vector<std::uint32_t> member_;
@@ -226,7 +226,6 @@ class LocalStepper {
   // Syncs in a round from which the lanes go on threads (bench: sedem_bench_scale --threads).
   static constexpr std::size_t kThreadedSyncs = 64;
   std::vector<Lane::Leaving> leaving_;  // scratch of take_lanes
-  std::vector<Sync> looked_;            // scratch of idle_horizon
   BoxRegistry boxes_;
   std::vector<std::uint32_t> wake_, failed_;  // scratch
   struct Ahead {
