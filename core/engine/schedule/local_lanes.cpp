@@ -20,7 +20,7 @@ namespace sedem {
 
 // Windows cut short (a grain synced early, engaged or retired) leave their entries behind until
 // their time comes: past 1.25 times the lane's entries at the last clean-up, the stale ones go
-// (the heap pops in the same order either way: entries compare by time, then id).
+// (the queue takes the rest in the same order either way: entries compare by time, then id).
 void LocalStepper::push_sync(Lane& lane, double t, std::uint32_t id) {
   lane.syncs.push(t, id);
   if (lane.syncs.size() <= lane.clean_at) return;

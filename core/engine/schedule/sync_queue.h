@@ -3,10 +3,10 @@
 // The queue of the coasting grains' syncs (schedule/local_stepper.h): (time, grain) pairs taken
 // earliest first, ties by grain.
 //
-// Why not a binary heap: in the last hours of a test nearly every grain coasts, the heap holds
-// one entry each, and its pops (a cache miss at every level below the first few) were a fifth
-// of the run at 10^5 grains. But the syncs' times only move forward: a sync at t pushes its
-// next window's end, later than t. A radix heap uses that. The entries sit in 65 buckets by the
+// Why not a binary heap: in a test's last hours nearly every grain coasts, the heap holds one
+// entry each, and its pops (a cache miss at every level below the first few) were a fifth of
+// that time at 10^5 grains. But the syncs' times only move forward: a sync at t pushes its next
+// window's end, later than t. A radix heap uses that. The entries sit in 65 buckets by the
 // highest bit in which their time differs from the last minimum taken (bucket 0: equal to it);
 // every key of a bucket is below every key of the next, so a pop takes bucket 0, and an empty
 // bucket 0 is refilled from the first bucket that is not empty, whose entries then spread over
