@@ -42,18 +42,11 @@ class SyncQueue {
   std::size_t size() const { return size_; }
 
   // The earliest pair (the queue must not be empty). Not const: it may refill bucket 0.
-  const Sync& front() {
-    const bool radix = radix_size() > 0;
-    if (radix && buckets_[0].empty()) refill();
-    if (!radix || (!early_.empty() && early_.front() < buckets_[0].back())) return early_.front();
-    return buckets_[0].back();
-  }
+  const Sync& front() { return early_first() ? early_.front() : buckets_[0].back(); }
 
   // Removes the earliest pair.
   void pop() {
-    const bool radix = radix_size() > 0;
-    if (radix && buckets_[0].empty()) refill();
-    if (!radix || (!early_.empty() && early_.front() < buckets_[0].back())) {
+    if (early_first()) {
       std::pop_heap(early_.begin(), early_.end(), kLater);
       early_.pop_back();
     } else {
@@ -157,20 +150,24 @@ class SyncQueue {
   }
   std::size_t radix_size() const { return size_ - early_.size(); }
 
+  // Whether the earliest pair is the early heap's; else it is bucket 0's last (refilled first
+  // if need be).
+  bool early_first() {
+    if (radix_size() == 0) return true;
+    if (buckets_[0].empty()) refill();
+    return !early_.empty() && early_.front() < buckets_[0].back();
+  }
+
   // Bucket 0 is empty, some later one is not: the first such spreads over those below it.
   void refill() {
     std::size_t i = 1;
     while (buckets_[i].empty()) ++i;
     std::vector<Sync>& from = buckets_[i];
-    std::uint64_t least = key(from.front().first);
-    for (const Sync& e : from) least = std::min(least, key(e.first));
-    last_ = least;
-    for (const Sync& e : from) buckets_[bucket(key(e.first))].push_back(e);
+    spread(from);  // into buckets below i only: `from` is not written while it is read
     if (from.capacity() > kKeptRoom)
       std::vector<Sync>().swap(from);
     else
       from.clear();
-    order_bucket_zero();
   }
 
   void order_bucket_zero() {
@@ -193,6 +190,7 @@ class SyncQueue {
     spread(all);
   }
 
+  // From the least time of `all`, each pair into its bucket.
   void spread(const std::vector<Sync>& all) {
     if (all.empty()) return;
     std::uint64_t least = key(all.front().first);
