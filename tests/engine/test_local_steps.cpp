@@ -160,6 +160,31 @@ TEST(LocalSteps, ACoarseGrainNeverPassesThroughAFineOne) {
   EXPECT_GT(engine.stats().engaged, 0);
 }
 
+// Two grains pushed apart side by side come to rest a radius apart, each inside the other's
+// member box and clear of its window: neither can leave the common step alone, where they would
+// fall side by side for ever, and both leave together.
+TEST(LocalSteps, TwoMembersHoldingEachOtherLeaveTogether) {
+  Scene scene = scene_with("stokes", "exponential");
+  scene.integrator.local_steps = true;
+  const double d = 60e-6, r = 0.5 * d;
+  // Thrown apart from a slight overlap: the drag stops each within half a radius.
+  const double tau = 2500 * d * d / (18 * Fluid{}.viscosity);
+  const double v0 = 0.5 * r / tau;
+  Engine engine(engine_setup(scene),
+                sample_of({{-0.99 * r, 0.2, d, -v0, 0}, {0.99 * r, 0.2, d, v0, 0}}));
+  std::int64_t most = 0;
+  while (engine.time() < 0.5) {
+    engine.step(0.5);
+    ASSERT_EQ(engine.local_violation(), "") << engine.time();
+    most = std::max<std::int64_t>(most, engine.stats().members);
+  }
+  const auto& p = engine.particles();
+  EXPECT_NEAR(std::abs(p.x[1] - p.x[0]) - d, r, 0.1 * r);
+  EXPECT_EQ(most, 2);
+  EXPECT_EQ(engine.stats().released, 2);
+  EXPECT_EQ(engine.stats().members, 0);
+}
+
 // Without suspension contacts the coarse grain falls through the fine one: each ends where it
 // would alone (Stokes drag: exact free paths), and neither ever joined the common step.
 TEST(LocalSteps, WithoutSuspensionContactsACoarseGrainPassesAFineOne) {
@@ -344,7 +369,7 @@ TEST(LocalSteps, WithoutSuspensionContactsLanesGiveTheSameBitsOnOneThreadOrTwo) 
     const auto wall = test::scattered(300, side * hw - 150e-6, side * hw + 150e-6, 0.31, 0.33, size,
                                       side > 0 ? 12 : 13, 0.0);
     for (const auto& g : wall)
-      if (std::abs(g.x) < hw - 40e-6) grains.push_back(g);
+      if (std::abs(g.x) < hw - 0.5 * g.d) grains.push_back(g);
   }
   const std::string checkpoint =
       (std::filesystem::temp_directory_path() / "sedem_lanes_test.ckpt").string();

@@ -58,7 +58,7 @@ TEST(StepLimit, AFineGrainPushedByACoarseOneIsWhatSetsTheStep) {
 // is pushed: the step is what they all allow.
 TEST(StepLimit, GrainsFallingApartPushNothing) {
   Engine engine(engine_setup(local_scene()),
-                test::sample_of({{0, 0.2, 60e-6}, {55e-6, 0.2, 40e-6}, {95e-6, 0.2, 30e-6}}));
+                test::sample_of({{0, 0.2, 60e-6}, {52e-6, 0.2, 40e-6}, {89e-6, 0.2, 30e-6}}));
   int shared = 0;
   for (int k = 0; k < 200; ++k) {
     engine.step(1.0);

@@ -45,7 +45,7 @@ FreeFlight LocalStepper::flight_of(std::uint32_t id, const FreeFlight::Point& p)
 bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit,
                          Box* needed, std::uint32_t* blocker) {
   const FreeFlight f = flight_of(id, p);
-  const double r = 0.5 * e_.sample.particles.diameter[id], pad = r * (1 + kSkin);
+  const double r = 0.5 * e_.sample.particles.diameter[id], pad = r * (1 + kCoastSkin);
   const double hw = e_.model.half_width;
   Lane& lane = lanes_[lane_of(p.x)];
   double window = e_.setup.integrator.max_coast;
@@ -148,7 +148,7 @@ bool LocalStepper::make_room(std::uint32_t id, double t, const FreeFlight::Point
       return;
     }
     const FreeFlight::Point q = coasting_at(j, t);
-    const double pad = 0.5 * s.diameter[j] * (1 + kSkin);
+    const double pad = 0.5 * s.diameter[j] * (1 + kCoastSkin);
     movable = !needed.overlaps(Box{q.x - pad, q.x + pad, q.y - pad, q.y + pad});
     room_.push_back({j, q, Box{}, 0.0});
   });
@@ -157,7 +157,7 @@ bool LocalStepper::make_room(std::uint32_t id, double t, const FreeFlight::Point
   for (Room& m : room_) {
     m.before = boxes_.box(m.id);
     m.t0 = track_[m.id].t0;
-    const double pad = 0.5 * s.diameter[m.id] * (1 + kSkin);
+    const double pad = 0.5 * s.diameter[m.id] * (1 + kCoastSkin);
     hold_coasting_box(m.id, Box{m.at.x - pad, m.at.x + pad, m.at.y - pad, m.at.y + pad});
     track_[m.id].t1 = HUGE_VAL;  // its heap entry is stale
   }
@@ -216,7 +216,7 @@ FreeFlight::Point LocalStepper::coasting_at(std::uint32_t id, double t) const {
 bool LocalStepper::resync_clear_of(std::uint32_t j, const Box& reach) {
   if (!e_.model.contact || track_[j].t0 > e_.time || track_[j].t1 <= e_.time) return false;
   const FreeFlight::Point q = coasting_at(j, e_.time);
-  const double r = 0.5 * e_.sample.particles.diameter[j], pad = r * (1 + kSkin);
+  const double r = 0.5 * e_.sample.particles.diameter[j], pad = r * (1 + kCoastSkin);
   const Box disc{q.x - pad, q.x + pad, q.y - pad, q.y + pad};
   if (disc.overlaps(reach)) return false;
   if (q.y + r < retire_height_) {

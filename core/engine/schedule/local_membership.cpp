@@ -134,17 +134,74 @@ void LocalStepper::release_members() {
   for (std::size_t k = 0; k < e_.state.size(); ++k)
     if (!e_.state.frozen[k] && e_.forces.stiffness[k] == 0) free.push_back(e_.state.origin[k]);
   std::sort(free.begin(), free.end());
-  for (std::uint32_t id : free) {
+  std::vector<Box> shortest(free.size());
+  for (std::size_t i = 0; i < free.size(); ++i) {
+    const std::uint32_t id = free[i];
     const std::size_t k = member_[id];
     const FreeFlight::Point p{e_.state.x[k], e_.state.y[k], e_.state.vx[k], e_.state.vy[k]};
     // A window of one crossing time is enough: requiring four cut the churn of grains leaving
     // and rejoining, but kept settling grains on the common step and let a spreading pile's
     // overlaps reach 0.7 of a radius (DensePileHasNoDeepOverlap).
-    if (!coast(id, e_.time, p, true, nullptr, &blocker_[id])) continue;
+    if (!coast(id, e_.time, p, true, &shortest[i], &blocker_[id])) continue;
     remove_member(k);
     member_[id] = kNoMember;
     ++e_.stats.released;
   }
+  // Most members that stay are held by one other member touching nothing, itself held by the
+  // first alone: each one's allowance box is all that is in the other's shortest window. Such
+  // a pair leaves together where their windows clear each other. (Found by a query, not by
+  // blocker_: which box a query meets first depends on the cells' order, which a resumed run
+  // does not share.)
+  std::vector<std::uint32_t> only(free.size(), kNoMember);
+  for (std::size_t i = 0; i < free.size(); ++i)
+    if (member_[free[i]] != kNoMember) only[i] = only_in_way(free[i], shortest[i]);
+  for (std::size_t i = 0; i < free.size(); ++i) {
+    const std::uint32_t a = free[i], b = only[i];
+    if (b == kNoMember || b < a) continue;
+    const auto other = std::lower_bound(free.begin(), free.end(), b);
+    if (other == free.end() || *other != b || only[std::size_t(other - free.begin())] != a)
+      continue;
+    if (!leave_together(a, b)) continue;
+    for (std::uint32_t id : {a, b}) {
+      remove_member(member_[id]);
+      member_[id] = kNoMember;
+      ++e_.stats.released;
+    }
+  }
+}
+
+// The one grain whose box meets `box` (a's shortest window), or kNoMember if none or several.
+std::uint32_t LocalStepper::only_in_way(std::uint32_t a, const Box& box) const {
+  std::uint32_t found = kNoMember, count = 0;
+  boxes_.overlapping(box, a, [&](std::uint32_t j) {
+    if (passes(j)) return;
+    found = j;
+    ++count;
+  });
+  return count == 1 ? found : kNoMember;
+}
+
+// Members a and b, touching nothing, take windows together: a's clear of b's disc (which b's
+// window will hold, whatever its length), then b's clear of a's window. False: either found
+// none, and both hold their boxes as before.
+bool LocalStepper::leave_together(std::uint32_t a, std::uint32_t b) {
+  const std::size_t ka = member_[a], kb = member_[b];
+  const FreeFlight::Point pa{e_.state.x[ka], e_.state.y[ka], e_.state.vx[ka], e_.state.vy[ka]};
+  const FreeFlight::Point pb{e_.state.x[kb], e_.state.y[kb], e_.state.vx[kb], e_.state.vy[kb]};
+  const Box box_a = boxes_.box(a), box_b = boxes_.box(b);
+  const std::uint8_t moving = box_tag(GrainKind::moving);
+  const double pad = 0.5 * e_.state.diameter[kb] * (1 + kCoastSkin);
+  boxes_.set(b, Box{pb.x - pad, pb.x + pad, pb.y - pad, pb.y + pad}, moving);
+  const Track track_a = track_[a];
+  if (coast(a, e_.time, pa, true)) {
+    if (coast(b, e_.time, pb, true)) return true;
+    // a's sync, already queued, is stale once a is a member again.
+    track_[a] = track_a;
+    kind_[a] = GrainKind::moving;
+    boxes_.set(a, box_a, moving);
+  }
+  boxes_.set(b, box_b, moving);
+  return false;
 }
 
 // Frozen members that no moving member can reach go back to the bed, out of the state.

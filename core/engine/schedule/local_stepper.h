@@ -13,15 +13,17 @@
 // before it is looked at again — a coasting grain the box its trajectory sweeps over its
 // window, a member of the common step its position with an allowance of kAllowance pace radii
 // (re-anchored once it has used kReanchor of them; it moves at most crossing_fraction < 1 of one
-// a step), a settled grain its disc — each widened by (1 + kSkin) radii. A member's pace radius
-// is its own, or, with carried steps, that of a coarser grain it is held against, or, for a
-// coarse grain at a high count, a few steps' travel (integrator.member_box_steps). A window is
+// a step), a settled grain its disc — each widened by a skin (kSkin radii, a coasting grain's
+// kCoastSkin). A member's pace radius is its own, or, with carried steps, that of a coarser
+// grain it is held against, or, for a coarse grain at a high count, a few steps' travel
+// (integrator.member_box_steps). A window is
 // chosen so that its box overlaps no other box and no wall; the longest such window up to
 // integrator.max_coast_s, halved until it fits. A grain that cannot coast even over its own
 // crossing time joins the common step (it is *engaged*), and whatever its box then overlaps
 // joins with it: coasting grains at their exact position now, settled ones as frozen members.
 // Members that touch nothing leave again as soon as a window fits (checked every
-// kReleaseEvery steps); frozen members that no moving member can reach go back to the bed.
+// kReleaseEvery steps), two that hold only each other together; frozen members that no moving
+// member can reach go back to the bed.
 //
 // The common step is the exponential integrator's, unchanged, over the members only: contacts,
 // the bed and freezing are exactly those of the global scheme. Syncs are taken in time order
@@ -82,8 +84,13 @@ class LocalStepper {
   std::size_t bytes() const;
 
  private:
-  // Boxes are widened by (1 + kSkin) radii.
+  // A member's and a settled grain's box is widened by (1 + kSkin) radii: the skin holds the
+  // projection's corrections. A coasting grain's follows its exact path and needs none but
+  // against round-off: (1 + kCoastSkin) radii. At half a radius, as the members', two grains
+  // falling side by side a radius apart could not both coast, and a third of the members in a
+  // test's first minute were there for it (docs/results/engine.md, "Thinner coasting boxes").
   static constexpr double kSkin = 0.5;
+  static constexpr double kCoastSkin = 0.1;
   // A member's box lets it travel kAllowance radii, and moves with it once it has travelled
   // kReanchor. Re-anchored past kReanchor at a step's end, it travels at most
   // crossing_fraction <= 1 radius in the next step: 2 is the least allowance that holds it (the
@@ -160,6 +167,8 @@ class LocalStepper {
   void anchor(std::size_t k);
   void remove_member(std::size_t k);
   void release_members();
+  std::uint32_t only_in_way(std::uint32_t a, const Box& box) const;
+  bool leave_together(std::uint32_t a, std::uint32_t b);
   void settle_members();
   void index_members();
   Box member_box(std::size_t k) const;
