@@ -130,11 +130,13 @@ void LocalStepper::remove_member(std::size_t k) {
 
 // Moving members that touch nothing coast again where a window fits.
 void LocalStepper::release_members() {
-  std::vector<std::uint32_t> free;
+  Release& r = release_;
+  std::vector<std::uint32_t>& free = r.free;
+  free.clear();
   for (std::size_t k = 0; k < e_.state.size(); ++k)
     if (!e_.state.frozen[k] && e_.forces.stiffness[k] == 0) free.push_back(e_.state.origin[k]);
   std::sort(free.begin(), free.end());
-  std::vector<Box> shortest(free.size());
+  r.shortest.resize(free.size());
   for (std::size_t i = 0; i < free.size(); ++i) {
     const std::uint32_t id = free[i];
     const std::size_t k = member_[id];
@@ -142,27 +144,56 @@ void LocalStepper::release_members() {
     // A window of one crossing time is enough: requiring four cut the churn of grains leaving
     // and rejoining, but kept settling grains on the common step and let a spreading pile's
     // overlaps reach 0.7 of a radius (DensePileHasNoDeepOverlap).
-    if (!coast(id, e_.time, p, true, &shortest[i], &blocker_[id])) continue;
+    if (!coast(id, e_.time, p, true, &r.shortest[i], &blocker_[id])) continue;
     remove_member(k);
     member_[id] = kNoMember;
     ++e_.stats.released;
   }
-  // Most members that stay are held by one other member touching nothing, itself held by the
-  // first alone: each one's allowance box is all that is in the other's shortest window. Such
-  // a pair leaves together where their windows clear each other. (Found by a query, not by
-  // blocker_: which box a query meets first depends on the cells' order, which a resumed run
-  // does not share.)
-  std::vector<std::uint32_t> only(free.size(), kNoMember);
-  for (std::size_t i = 0; i < free.size(); ++i)
-    if (member_[free[i]] != kNoMember) only[i] = only_in_way(free[i], shortest[i]);
+  // Most members that stay are held by others touching nothing, whose allowance boxes (not
+  // their discs) are in their shortest windows' way, and that they hold in turn: two grains
+  // falling side by side a radius apart, or a few. Each such group leaves together where all
+  // its windows clear each other. (Found by queries, not by blocker_: which box a query meets
+  // first depends on the cells' order, which a resumed run does not share.)
+  const double hw = e_.model.half_width;
+  auto index_of = [&](std::uint32_t id) {
+    const auto at = std::lower_bound(free.begin(), free.end(), id);
+    return at != free.end() && *at == id ? std::size_t(at - free.begin()) : free.size();
+  };
+  r.loose.assign(free.size(), 0);
+  r.groups.assign(free.size());
   for (std::size_t i = 0; i < free.size(); ++i) {
-    const std::uint32_t a = free[i], b = only[i];
-    if (b == kNoMember || b < a) continue;
-    const auto other = std::lower_bound(free.begin(), free.end(), b);
-    if (other == free.end() || *other != b || only[std::size_t(other - free.begin())] != a)
-      continue;
-    if (!leave_together(a, b)) continue;
-    for (std::uint32_t id : {a, b}) {
+    const std::uint32_t a = free[i];
+    if (member_[a] == kNoMember) continue;
+    const Box& window = r.shortest[i];
+    bool ok = window.x0 > -hw && window.x1 < hw && window.y0 > 0;
+    // Every stayed member in the way joins a's group, whatever else is (a query's order is
+    // the cells'): a group that holds one that cannot leave stays, all of it.
+    boxes_.overlapping(window, a, [&](std::uint32_t j) {
+      if (passes(j)) return;
+      const std::size_t m = index_of(j);
+      const bool stayed = m < free.size() && member_[j] != kNoMember;
+      ok = ok && stayed && !disc_of(member_[j]).overlaps(window);
+      if (stayed) r.groups.unite(std::uint32_t(i), std::uint32_t(m));
+    });
+    r.loose[i] = ok;
+  }
+  r.groups.flatten();
+  r.by_group.clear();
+  r.whole.assign(free.size(), 1);
+  for (std::size_t i = 0; i < free.size(); ++i) {
+    if (member_[free[i]] == kNoMember) continue;
+    const std::uint32_t root = r.groups.flat_root(std::uint32_t(i));
+    r.whole[root] = r.whole[root] && r.loose[i];
+    r.by_group.emplace_back(root, free[i]);
+  }
+  std::sort(r.by_group.begin(), r.by_group.end());
+  for (std::size_t g = 0; g < r.by_group.size();) {
+    const std::uint32_t root = r.by_group[g].first;
+    r.group.clear();
+    for (; g < r.by_group.size() && r.by_group[g].first == root; ++g)
+      r.group.push_back(r.by_group[g].second);
+    if (!r.whole[root] || !leave_together(r.group)) continue;
+    for (std::uint32_t id : r.group) {
       remove_member(member_[id]);
       member_[id] = kNoMember;
       ++e_.stats.released;
@@ -170,37 +201,38 @@ void LocalStepper::release_members() {
   }
 }
 
-// The one grain whose box meets `box` (a's shortest window), or kNoMember if none or several.
-std::uint32_t LocalStepper::only_in_way(std::uint32_t a, const Box& box) const {
-  std::uint32_t found = kNoMember, count = 0;
-  boxes_.overlapping(box, a, [&](std::uint32_t j) {
-    if (passes(j)) return;
-    found = j;
-    ++count;
-  });
-  return count == 1 ? found : kNoMember;
+// Member k's disc widened as a coasting grain's: inside any window it takes now.
+Box LocalStepper::disc_of(std::size_t k) const {
+  const double pad = 0.5 * e_.state.diameter[k] * (1 + kCoastSkin);
+  return Box{e_.state.x[k] - pad, e_.state.x[k] + pad, e_.state.y[k] - pad, e_.state.y[k] + pad};
 }
 
-// Members a and b, touching nothing, take windows together: a's clear of b's disc (which b's
-// window will hold, whatever its length), then b's clear of a's window. False: either found
-// none, and both hold their boxes as before.
-bool LocalStepper::leave_together(std::uint32_t a, std::uint32_t b) {
-  const std::size_t ka = member_[a], kb = member_[b];
-  const FreeFlight::Point pa{e_.state.x[ka], e_.state.y[ka], e_.state.vx[ka], e_.state.vy[ka]};
-  const FreeFlight::Point pb{e_.state.x[kb], e_.state.y[kb], e_.state.vx[kb], e_.state.vy[kb]};
-  const Box box_a = boxes_.box(a), box_b = boxes_.box(b);
+// Members touching nothing take windows together, in turn: each clear of the discs of those
+// after it (which their windows will hold, whatever their length) and of the windows of those
+// before it. False: one found none, and all hold their boxes as before.
+bool LocalStepper::leave_together(const std::vector<std::uint32_t>& group) {
   const std::uint8_t moving = box_tag(GrainKind::moving);
-  const double pad = 0.5 * e_.state.diameter[kb] * (1 + kCoastSkin);
-  boxes_.set(b, Box{pb.x - pad, pb.x + pad, pb.y - pad, pb.y + pad}, moving);
-  const Track track_a = track_[a];
-  if (coast(a, e_.time, pa, true)) {
-    if (coast(b, e_.time, pb, true)) return true;
-    // a's sync, already queued, is stale once a is a member again.
-    track_[a] = track_a;
-    kind_[a] = GrainKind::moving;
-    boxes_.set(a, box_a, moving);
+  std::vector<Release::Held>& held = release_.held;
+  held.clear();
+  for (std::uint32_t id : group) {
+    held.push_back({boxes_.box(id), track_[id]});
+    boxes_.set(id, disc_of(member_[id]), moving);
   }
-  boxes_.set(b, box_b, moving);
+  std::size_t left = 0;
+  for (; left < group.size(); ++left) {
+    const std::size_t k = member_[group[left]];
+    const FreeFlight::Point p{e_.state.x[k], e_.state.y[k], e_.state.vx[k], e_.state.vy[k]};
+    if (!coast(group[left], e_.time, p, true)) break;
+  }
+  if (left == group.size()) return true;
+  for (std::size_t i = 0; i < group.size(); ++i) {
+    // The windows' syncs, already queued, are stale once they are members again.
+    if (i < left) {
+      track_[group[i]] = held[i].track;
+      kind_[group[i]] = GrainKind::moving;
+    }
+    boxes_.set(group[i], held[i].box, moving);
+  }
   return false;
 }
 

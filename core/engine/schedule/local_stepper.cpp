@@ -324,7 +324,7 @@ std::size_t LocalStepper::bytes() const {
     lane_bytes += l.syncs.bytes() + cap(l.near) + cap(l.failed) + cap(l.leaving);
   return cap(kind_) + cap(track_) + cap(member_) + cap(wake_) + boxes_.bytes() + cap(land_y_) +
          cap(bed_) + cap(ahead_slot_) + cap(blocker_) + cap(ahead_) + cap(widened_) +
-         cap(leaving_) + lane_bytes;
+         cap(leaving_) + release_.bytes() + lane_bytes;
 }
 
 }  // namespace sedem

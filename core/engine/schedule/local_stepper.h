@@ -22,8 +22,8 @@
 // crossing time joins the common step (it is *engaged*), and whatever its box then overlaps
 // joins with it: coasting grains at their exact position now, settled ones as frozen members.
 // Members that touch nothing leave again as soon as a window fits (checked every
-// kReleaseEvery steps), two that hold only each other together; frozen members that no moving
-// member can reach go back to the bed.
+// kReleaseEvery steps), a group that holds only each other together; frozen members that no
+// moving member can reach go back to the bed.
 //
 // The common step is the exponential integrator's, unchanged, over the members only: contacts,
 // the bed and freezing are exactly those of the global scheme. Syncs are taken in time order
@@ -60,6 +60,7 @@
 #include "core/engine/schedule/engine_parts.h"
 #include "core/engine/schedule/grain_kind.h"
 #include "core/engine/schedule/sync_queue.h"
+#include "core/engine/state/disjoint_sets.h"
 #include "core/model/particles.h"
 
 namespace sedem {
@@ -167,8 +168,8 @@ class LocalStepper {
   void anchor(std::size_t k);
   void remove_member(std::size_t k);
   void release_members();
-  std::uint32_t only_in_way(std::uint32_t a, const Box& box) const;
-  bool leave_together(std::uint32_t a, std::uint32_t b);
+  bool leave_together(const std::vector<std::uint32_t>& group);
+  Box disc_of(std::size_t k) const;
   void settle_members();
   void index_members();
   Box member_box(std::size_t k) const;
@@ -256,6 +257,27 @@ class LocalStepper {
   };
   std::vector<Room> room_;            // scratch of make_room
   std::vector<std::uint32_t> found_;  // scratch of wake_around
+  // Scratch of release_members: the members touching nothing, their shortest windows, the
+  // groups of those that stay and hold each other (by index in `free`), and the boxes and
+  // tracks a group held before trying to leave together.
+  struct Release {
+    std::vector<std::uint32_t> free, group;
+    std::vector<Box> shortest;
+    std::vector<std::uint8_t> loose, whole;
+    DisjointSets groups;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> by_group;  // (root, member)
+    struct Held {
+      Box box;
+      Track track;
+    };
+    std::vector<Held> held;
+    std::size_t bytes() const {
+      auto cap = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+      return cap(free) + cap(group) + cap(shortest) + cap(loose) + cap(whole) + groups.bytes() +
+             cap(by_group) + cap(held);
+    }
+  };
+  Release release_;
   double registry_cell_ = 1e-3, travel_ = 1e-3;
   std::size_t settled_ = 0;
   double retire_height_ = 0;    // 0: no grain retires
