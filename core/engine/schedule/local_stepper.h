@@ -16,14 +16,13 @@
 // a step), a settled grain its disc — each widened by a skin (kSkin radii, a coasting grain's
 // kCoastSkin). A member's pace radius is its own, or, with carried steps, that of a coarser
 // grain it is held against, or, for a coarse grain at a high count, a few steps' travel
-// (integrator.member_box_steps). A window is
-// chosen so that its box overlaps no other box and no wall; the longest such window up to
-// integrator.max_coast_s, halved until it fits. A grain that cannot coast even over its own
-// crossing time joins the common step (it is *engaged*), and whatever its box then overlaps
-// joins with it: coasting grains at their exact position now, settled ones as frozen members.
-// Members that touch nothing leave again as soon as a window fits (checked every
-// kReleaseEvery steps), a group that holds only each other together; frozen members that no
-// moving member can reach go back to the bed.
+// (integrator.member_box_steps). A window is chosen so that its box overlaps no other box and
+// no wall; the longest such window up to integrator.max_coast_s, halved until it fits. A grain that
+// cannot coast even over its own crossing time joins the common step (it is *engaged*), and
+// whatever its box then overlaps joins with it: coasting grains at their exact position now,
+// settled ones as frozen members. Members that touch nothing leave again as soon as a window fits
+// (checked every kReleaseEvery steps), a group that holds only each other together; frozen members
+// that no moving member can reach go back to the bed.
 //
 // The common step is the exponential integrator's, unchanged, over the members only: contacts,
 // the bed and freezing are exactly those of the global scheme. Syncs are taken in time order
@@ -88,8 +87,9 @@ class LocalStepper {
   // A member's and a settled grain's box is widened by (1 + kSkin) radii: the skin holds the
   // projection's corrections. A coasting grain's follows its exact path and needs none but
   // against round-off: (1 + kCoastSkin) radii. At half a radius, as the members', two grains
-  // falling side by side a radius apart could not both coast, and a third of the members in a
-  // test's first minute were there for it (docs/results/engine.md, "Thinner coasting boxes").
+  // falling side by side a radius apart could not both coast, and a quarter of the members in
+  // a test's first minute were there for it (docs/results/engine.md, "Thinner coasting boxes,
+  // and pairs that leave together").
   static constexpr double kSkin = 0.5;
   static constexpr double kCoastSkin = 0.1;
   // A member's box lets it travel kAllowance radii, and moves with it once it has travelled
