@@ -23,6 +23,12 @@ void LocalStepper::hold_coasting_box(std::uint32_t id, const Box& box) {
     boxes_.clear(id);
 }
 
+// A coasting grain's box at one point of its path (a window's box holds it wherever it goes).
+Box LocalStepper::coasting_disc(double x, double y, double diameter) {
+  const double pad = 0.5 * diameter * (1 + kCoastSkin);
+  return Box{x - pad, x + pad, y - pad, y + pad};
+}
+
 FreeFlight LocalStepper::flight_of(std::uint32_t id, const FreeFlight::Point& p) const {
   const Particles& s = e_.sample.particles;
   const double d = s.diameter[id], mass = e_.model.mass(d);
@@ -148,8 +154,7 @@ bool LocalStepper::make_room(std::uint32_t id, double t, const FreeFlight::Point
       return;
     }
     const FreeFlight::Point q = coasting_at(j, t);
-    const double pad = 0.5 * s.diameter[j] * (1 + kCoastSkin);
-    movable = !needed.overlaps(Box{q.x - pad, q.x + pad, q.y - pad, q.y + pad});
+    movable = !needed.overlaps(coasting_disc(q.x, q.y, s.diameter[j]));
     room_.push_back({j, q, Box{}, 0.0});
   });
   if (!movable || room_.empty()) return false;
@@ -157,8 +162,7 @@ bool LocalStepper::make_room(std::uint32_t id, double t, const FreeFlight::Point
   for (Room& m : room_) {
     m.before = boxes_.box(m.id);
     m.t0 = track_[m.id].t0;
-    const double pad = 0.5 * s.diameter[m.id] * (1 + kCoastSkin);
-    hold_coasting_box(m.id, Box{m.at.x - pad, m.at.x + pad, m.at.y - pad, m.at.y + pad});
+    hold_coasting_box(m.id, coasting_disc(m.at.x, m.at.y, s.diameter[m.id]));
     track_[m.id].t1 = HUGE_VAL;  // its heap entry is stale
   }
   const Box before = boxes_.box(id);
@@ -216,10 +220,10 @@ FreeFlight::Point LocalStepper::coasting_at(std::uint32_t id, double t) const {
 bool LocalStepper::resync_clear_of(std::uint32_t j, const Box& reach) {
   if (!e_.model.contact || track_[j].t0 > e_.time || track_[j].t1 <= e_.time) return false;
   const FreeFlight::Point q = coasting_at(j, e_.time);
-  const double r = 0.5 * e_.sample.particles.diameter[j], pad = r * (1 + kCoastSkin);
-  const Box disc{q.x - pad, q.x + pad, q.y - pad, q.y + pad};
+  const double d = e_.sample.particles.diameter[j];
+  const Box disc = coasting_disc(q.x, q.y, d);
   if (disc.overlaps(reach)) return false;
-  if (q.y + r < retire_height_) {
+  if (q.y + 0.5 * d < retire_height_) {
     retire(j, e_.time, q);
     return true;
   }

@@ -172,7 +172,7 @@ void LocalStepper::release_members() {
       if (passes(j)) return;
       const std::size_t m = index_of(j);
       const bool stayed = m < free.size() && member_[j] != kNoMember;
-      ok = ok && stayed && !disc_of(member_[j]).overlaps(window);
+      ok = ok && stayed && !member_disc(member_[j]).overlaps(window);
       if (stayed) r.groups.unite(std::uint32_t(i), std::uint32_t(m));
     });
     r.loose[i] = ok;
@@ -202,9 +202,8 @@ void LocalStepper::release_members() {
 }
 
 // Member k's disc widened as a coasting grain's: inside any window it takes now.
-Box LocalStepper::disc_of(std::size_t k) const {
-  const double pad = 0.5 * e_.state.diameter[k] * (1 + kCoastSkin);
-  return Box{e_.state.x[k] - pad, e_.state.x[k] + pad, e_.state.y[k] - pad, e_.state.y[k] + pad};
+Box LocalStepper::member_disc(std::size_t k) const {
+  return coasting_disc(e_.state.x[k], e_.state.y[k], e_.state.diameter[k]);
 }
 
 // Members touching nothing take windows together, in turn: each clear of the discs of those
@@ -216,7 +215,7 @@ bool LocalStepper::leave_together(const std::vector<std::uint32_t>& group) {
   held.clear();
   for (std::uint32_t id : group) {
     held.push_back({boxes_.box(id), track_[id]});
-    boxes_.set(id, disc_of(member_[id]), moving);
+    boxes_.set(id, member_disc(member_[id]), moving);
   }
   std::size_t left = 0;
   for (; left < group.size(); ++left) {

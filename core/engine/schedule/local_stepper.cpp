@@ -53,10 +53,8 @@ LocalStepper::LocalStepper(EngineParts& parts) : e_(parts) {
   for (std::uint32_t id = 0; id < n; ++id) {
     start[id] = {e_.state.x[id], e_.state.y[id], e_.state.vx[id], e_.state.vy[id]};
     track_[id].flight = FreeFlight{start[id].x, start[id].y, start[id].vx, start[id].vy, 0, 0, 0};
-    const double pad = 0.5 * s.diameter[id] * (1 + kCoastSkin);
     if (e_.model.contact)
-      hold_coasting_box(
-          id, Box{start[id].x - pad, start[id].x + pad, start[id].y - pad, start[id].y + pad});
+      hold_coasting_box(id, coasting_disc(start[id].x, start[id].y, s.diameter[id]));
   }
   // The state holds the members only, a few thousand at most: the room it had for every
   // grain (a sixth of the memory at a million particles) goes back.

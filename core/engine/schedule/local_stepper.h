@@ -160,6 +160,7 @@ class LocalStepper {
   bool resync_clear_of(std::uint32_t id, const Box& reach);
   bool passes(std::uint32_t j) const;
   void hold_coasting_box(std::uint32_t id, const Box& box);
+  static Box coasting_disc(double x, double y, double diameter);
   FreeFlight flight_of(std::uint32_t id, const FreeFlight::Point& p) const;
   FreeFlight::Point coasting_at(std::uint32_t id, double t) const;
   // Membership of the common step (local_membership.cpp).
@@ -169,7 +170,7 @@ class LocalStepper {
   void remove_member(std::size_t k);
   void release_members();
   bool leave_together(const std::vector<std::uint32_t>& group);
-  Box disc_of(std::size_t k) const;
+  Box member_disc(std::size_t k) const;
   void settle_members();
   void index_members();
   Box member_box(std::size_t k) const;
