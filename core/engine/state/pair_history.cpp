@@ -17,13 +17,16 @@ double PairHistory::find(std::uint64_t k) const {
 void PairHistory::assign(const std::vector<Entry>* lists, std::size_t list_count) {
   std::size_t n = 0;
   for (std::size_t l = 0; l < list_count; ++l) n += lists[l].size();
+  // The table is sized for these entries, not for the most a step ever held: clearing the
+  // whole buffer at every step, after the first minute's crowd had grown it, was most of this
+  // function's time over a whole test. Slots past the table's size are always empty.
   const std::size_t wanted = std::bit_ceil(std::max<std::size_t>(2 * n + 2, 16));
   if (slots_.size() < wanted) {
     slots_.assign(wanted, Entry{});
-    mask_ = wanted - 1;
   } else if (size_ > 0) {
-    std::fill(slots_.begin(), slots_.end(), Entry{});
+    std::fill(slots_.begin(), slots_.begin() + std::ptrdiff_t(mask_ + 1), Entry{});
   }
+  mask_ = wanted - 1;
   size_ = n;
   for (std::size_t l = 0; l < list_count; ++l) {
     for (const Entry& e : lists[l]) {
