@@ -81,6 +81,10 @@ class SpanTally {
     fast_ += double(stats.fast_set);
     substeps_ += double(stats.substeps);
     split_steps_ += stats.substeps > 0;
+    if (stats.own_step_share > 0) {  // weighed by the members it spoke for
+      own_share_ += stats.own_step_share * double(stats.members);
+      own_members_ += double(stats.members);
+    }
     while (next_ < spans_.size() && time >= spans_[next_].until_s) close(spans_[next_++], true);
   }
 
@@ -105,6 +109,7 @@ class SpanTally {
     span.unpushed_steps = unpushed_steps_;
     span.fast = steps_ > 0 ? fast_ / double(steps_) : 0;
     span.substeps = split_steps_ > 0 ? substeps_ / double(split_steps_) : 0;
+    span.own_share = own_members_ > 0 ? own_share_ / own_members_ : 0;
   }
 
   std::chrono::steady_clock::time_point start_;
@@ -114,6 +119,7 @@ class SpanTally {
   double members_ = 0, contacts_ = 0, pushed_ = 0, unpushed_steps_ = 0;
   double fast_ = 0, substeps_ = 0;
   std::int64_t split_steps_ = 0;
+  double own_share_ = 0, own_members_ = 0;
 };
 
 // A span's wall time for the table: "-" where the run did not get that far.
@@ -130,6 +136,15 @@ std::string first_minute_push_ratio(const ScaleRow& r) {
   if (r.spans.empty() || !r.spans[0].reached || r.spans[0].unpushed_steps <= 0) return "-";
   char s[32];
   std::snprintf(s, sizeof s, "%.1f", double(r.spans[0].steps) / r.spans[0].unpushed_steps);
+  return s;
+}
+
+// The first minute's members' particle-steps over those clusters of members on steps of their
+// own would have taken ("-" where the run did not get that far or never looked).
+std::string first_minute_own_ratio(const ScaleRow& r) {
+  if (r.spans.empty() || !r.spans[0].reached || r.spans[0].own_share <= 0) return "-";
+  char s[32];
+  std::snprintf(s, sizeof s, "%.1f", 1.0 / r.spans[0].own_share);
   return s;
 }
 
@@ -158,10 +173,11 @@ void span_pair(std::ostream& out, const ScaleRow& r, double ScaleSpan::*first,
 
 void print_header(std::FILE* table) {
   std::fprintf(table,
-               "%-10s %-10s %9s %9s %8s %8s %10s %11s %9s %10s %8s %8s %8s %8s %10s %9s %9s %9s\n",
+               "%-10s %-10s %9s %9s %8s %8s %10s %11s %9s %10s %8s %8s %8s %8s %10s %9s %9s %9s "
+               "%8s\n",
                "label", "sample", "particles", "wall_s", "to60_s", "to600_s", "steps", "p-steps/s",
                "sim_s", "merit", "eng_B/p", "rss_MB", "hyd_pp", "sph_pp", "pip_pp", "members",
-               "contacts", "push_x60");
+               "contacts", "push_x60", "own_x60");
   std::fflush(table);
 }
 
@@ -175,13 +191,14 @@ void print_row(std::FILE* table, const ScaleRow& r) {
     std::fprintf(
         table,
         "%-10s %-10s %9zu %9.1f %8s %8s %10lld %11.3g %9.0f %10.3g %8.0f %8.1f %8.3f %8.3f "
-        "%10.3f %9.1f %9.1f %9s\n",
+        "%10.3f %9.1f %9.1f %9s %8s\n",
         r.label.c_str(), r.sample.c_str(), r.particles, r.wall_s, span_wall(r, 0).c_str(),
         span_wall(r, 1).c_str(), static_cast<long long>(r.steps),
         r.particle_steps / std::max(r.wall_s, 1e-9), r.simulated_s, r.merit(),
         double(r.engine_peak_bytes) / double(std::max<std::size_t>(r.particles, 1)),
         double(r.rss_peak_bytes) / 1e6, r.error_hydrometer, r.error_buoyancy, r.error_pipette,
-        whole.members, whole.contacts, first_minute_push_ratio(r).c_str());
+        whole.members, whole.contacts, first_minute_push_ratio(r).c_str(),
+        first_minute_own_ratio(r).c_str());
     if (!r.message.empty())
       std::fprintf(table, "%-10s %-10s note: %s\n", "", "", r.message.c_str());
   }
@@ -296,7 +313,9 @@ void write_scale_csv(const std::vector<ScaleRow>& rows, const fs::path& file) {
   out << ",members_per_step,contacts_per_step";
   span_pair_header(out, "pushed_per_step", "unpushed_steps");
   span_pair_header(out, "fast_per_step", "substeps_per_split_step");
-  out << ",widened_rows,box_moves\n";
+  out << ",widened_rows,box_moves";
+  for (const double until : kScaleSpanEnds) out << ",own_step_share_to_" << format_count(until);
+  out << ",own_step_share\n";
   for (const auto& r : rows) {
     const double n = double(std::max<std::size_t>(r.particles, 1));
     out << field(r.label) << ',' << field(r.sample) << ',' << r.status << ','
@@ -322,7 +341,16 @@ void write_scale_csv(const std::vector<ScaleRow>& rows, const fs::path& file) {
       out << ',' << r.spans.back().members << ',' << r.spans.back().contacts;
     span_pair(out, r, &ScaleSpan::pushed, &ScaleSpan::unpushed_steps);
     span_pair(out, r, &ScaleSpan::fast, &ScaleSpan::substeps);
-    out << ',' << r.widened_rows << ',' << r.box_moves << '\n';
+    out << ',' << r.widened_rows << ',' << r.box_moves;
+    for (std::size_t k = 0; k < std::size(kScaleSpanEnds); ++k) {
+      if (k + 1 < r.spans.size() && r.spans[k].reached)
+        out << ',' << r.spans[k].own_share;
+      else
+        out << ',';
+    }
+    out << ',';
+    if (!r.spans.empty()) out << r.spans.back().own_share;
+    out << '\n';
   }
   if (!out.flush()) throw std::runtime_error("cannot write " + file.string());
 }

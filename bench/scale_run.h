@@ -42,6 +42,10 @@ struct ScaleSpan {
   // Carried sub-steps: the mean of the fast set's members over every step (0 where a step was
   // not split), and of the sub-steps they took over the steps that were split.
   double fast = 0, substeps = 0;
+  // Local steps: the mean of EngineStats::own_step_share over the steps that looked (every
+  // 64th), each weighed by its members, 0 where none did: what clusters of members on steps of
+  // their own would leave of the members' particle-steps.
+  double own_share = 0;
 };
 
 // The spans the benchmark reports: to 60 s, to 600 s and to the end.

@@ -28,6 +28,11 @@ struct EngineStats {
   // Carried sub-steps (integrator.carried_substeps): the members of the last step's fast set and
   // the sub-steps they took (0 and 0: the step was not split).
   std::size_t fast_set = 0, substeps = 0;
+  // Local steps, every 64th step (0 at the others, or where no member moved): the members'
+  // particle-steps if each cluster of them (joined by overlapping boxes) took the step its own
+  // fastest member allows, over the common step's (1: nothing to save). A report: the members
+  // share one step.
+  double own_step_share = 0;
 };
 
 }  // namespace sedem

@@ -159,6 +159,13 @@ TEST(ScaleBench, ReportsTheFirstMinuteApart) {
   // The demo's members move: their boxes moved on, as many times as the stats say.
   EXPECT_GT(rows[0].box_moves, 0);
   EXPECT_EQ(std::stoll(row.at("box_moves")), rows[0].box_moves);
+  // Clusters on steps of their own would leave a share of the members' particle-steps: more
+  // than none, at most all (EngineStats::own_step_share; its values: OwnStepShare.*).
+  EXPECT_GT(spans[0].own_share, 0);
+  EXPECT_LE(spans[0].own_share, 1 + 1e-12);
+  EXPECT_NEAR(std::stod(row.at("own_step_share_to_60")), spans[0].own_share, 1e-9);
+  EXPECT_NEAR(std::stod(row.at("own_step_share")), spans[2].own_share, 1e-9);
+  EXPECT_EQ(row.at("own_step_share_to_600"), "");
 }
 
 // Watching every step changes nothing: the same steps, the same readings, the same particles

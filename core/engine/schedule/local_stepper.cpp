@@ -236,6 +236,9 @@ void LocalStepper::step(double limit) {
     widened_.resize(kept);
   }
 
+  e_.stats.own_step_share = 0;
+  if (moving && e_.model.contact && e_.stats.steps % kClusterLookEvery == 0)
+    e_.stats.own_step_share = own_step_share();  // the members as they stepped
   if (moving) {
     // Which members touch something, from this step's projection, before any joins or leaves.
     if (e_.stats.steps % kReleaseEvery == 0) e_.integrator->mark_touching(e_.forces.stiffness);
@@ -322,7 +325,7 @@ std::size_t LocalStepper::bytes() const {
     lane_bytes += l.syncs.bytes() + cap(l.near) + cap(l.failed) + cap(l.leaving);
   return cap(kind_) + cap(track_) + cap(member_) + cap(wake_) + boxes_.bytes() + cap(land_y_) +
          cap(bed_) + cap(ahead_slot_) + cap(blocker_) + cap(ahead_) + cap(widened_) +
-         cap(leaving_) + release_.bytes() + lane_bytes;
+         cap(leaving_) + release_.bytes() + clusters_.bytes() + lane_bytes;
 }
 
 }  // namespace sedem

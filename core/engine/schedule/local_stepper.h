@@ -44,7 +44,8 @@
 // local_coasting.cpp (windows and syncs), local_lanes.cpp (syncs lane by lane, on threads),
 // local_membership.cpp (engage, release, settle),
 // local_retirement.cpp (the coarse bed), local_checkpoint.cpp (its state in checkpoints, and
-// the scheme's promise checked for tests).
+// the scheme's promise checked for tests), local_clusters.cpp (what clusters of members on
+// steps of their own would save: a report).
 
 #include <cmath>
 #include <cstddef>
@@ -279,6 +280,19 @@ class LocalStepper {
     }
   };
   Release release_;
+  // What clusters of members on steps of their own would save (local_clusters.cpp), looked at
+  // every kClusterLookEvery steps: the scratch of the look.
+  double own_step_share();
+  static constexpr std::int64_t kClusterLookEvery = 64;
+  struct Clusters {
+    DisjointSets sets;            // members joined by overlapping boxes
+    std::vector<double> fastest;  // by root: the cluster's fastest member's rate
+    std::vector<double> moving;   // by root: its moving members
+    std::size_t bytes() const {
+      return sets.bytes() + (fastest.capacity() + moving.capacity()) * sizeof(double);
+    }
+  };
+  Clusters clusters_;
   double registry_cell_ = 1e-3, travel_ = 1e-3;
   std::size_t settled_ = 0;
   double retire_height_ = 0;    // 0: no grain retires

@@ -1,0 +1,46 @@
+// What stepping each cluster of members on a step of its own would save: a report for the
+// benchmark (EngineStats::own_step_share); the members still share one step.
+
+#include <algorithm>
+
+#include "core/engine/schedule/local_stepper.h"
+
+namespace sedem {
+
+// Two members whose boxes do not overlap cannot touch before one of the boxes moves, so the
+// members fall into clusters joined by overlapping boxes (frozen members' included), each of
+// which could take the step its own fastest member allows. A member's rate is the step rule's:
+// its travel in a step over its pace radius (ExponentialIntegrator::fastest). The share is the
+// members' particle-steps at those steps over the common step's: 1 saves nothing.
+double LocalStepper::own_step_share() {
+  Clusters& c = clusters_;
+  const std::size_t n = e_.state.size();
+  c.sets.assign(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::uint32_t id = e_.state.origin[k];
+    boxes_.overlapping(
+        boxes_.box(id), id, [&](std::uint32_t j) { c.sets.unite(std::uint32_t(k), member_[j]); },
+        [&](std::uint32_t j) { return member_[j] != kNoMember; });
+  }
+  c.sets.flatten();
+  c.fastest.assign(n, 0.0);
+  c.moving.assign(n, 0);
+  double fastest = 0, moving = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (e_.state.frozen[k]) continue;
+    const double r = 0.5 * e_.state.diameter[k];
+    const double pace = paced() ? std::min(r, e_.allowance[e_.state.origin[k]]) : r;
+    const double rate = e_.integrator->travel_in_step(e_.state, k) / pace;
+    const std::uint32_t root = c.sets.flat_root(std::uint32_t(k));
+    c.fastest[root] = std::max(c.fastest[root], rate);
+    c.moving[root] += 1;
+    fastest = std::max(fastest, rate);
+    moving += 1;
+  }
+  if (!(fastest > 0)) return 0;  // not known: no member moved
+  double own = 0;
+  for (std::size_t k = 0; k < n; ++k) own += c.moving[k] * c.fastest[k];
+  return own / (moving * fastest);
+}
+
+}  // namespace sedem
