@@ -83,6 +83,7 @@ class SpanTally {
     split_steps_ += stats.substeps > 0;
     if (stats.own_step_share > 0) {  // weighed by the members it spoke for
       own_share_ += stats.own_step_share * double(stats.members);
+      largest_cluster_ += stats.largest_cluster * double(stats.members);
       own_members_ += double(stats.members);
     }
     while (next_ < spans_.size() && time >= spans_[next_].until_s) close(spans_[next_++], true);
@@ -110,6 +111,7 @@ class SpanTally {
     span.fast = steps_ > 0 ? fast_ / double(steps_) : 0;
     span.substeps = split_steps_ > 0 ? substeps_ / double(split_steps_) : 0;
     span.own_share = own_members_ > 0 ? own_share_ / own_members_ : 0;
+    span.largest_cluster = own_members_ > 0 ? largest_cluster_ / own_members_ : 0;
   }
 
   std::chrono::steady_clock::time_point start_;
@@ -119,7 +121,7 @@ class SpanTally {
   double members_ = 0, contacts_ = 0, pushed_ = 0, unpushed_steps_ = 0;
   double fast_ = 0, substeps_ = 0;
   std::int64_t split_steps_ = 0;
-  double own_share_ = 0, own_members_ = 0;
+  double own_share_ = 0, largest_cluster_ = 0, own_members_ = 0;
 };
 
 // A span's wall time for the table: "-" where the run did not get that far.
@@ -314,8 +316,8 @@ void write_scale_csv(const std::vector<ScaleRow>& rows, const fs::path& file) {
   span_pair_header(out, "pushed_per_step", "unpushed_steps");
   span_pair_header(out, "fast_per_step", "substeps_per_split_step");
   out << ",widened_rows,box_moves";
-  for (const double until : kScaleSpanEnds) out << ",own_step_share_to_" << format_count(until);
-  out << ",own_step_share\n";
+  span_pair_header(out, "own_step_share", "largest_cluster");
+  out << '\n';
   for (const auto& r : rows) {
     const double n = double(std::max<std::size_t>(r.particles, 1));
     out << field(r.label) << ',' << field(r.sample) << ',' << r.status << ','
@@ -342,14 +344,7 @@ void write_scale_csv(const std::vector<ScaleRow>& rows, const fs::path& file) {
     span_pair(out, r, &ScaleSpan::pushed, &ScaleSpan::unpushed_steps);
     span_pair(out, r, &ScaleSpan::fast, &ScaleSpan::substeps);
     out << ',' << r.widened_rows << ',' << r.box_moves;
-    for (std::size_t k = 0; k < std::size(kScaleSpanEnds); ++k) {
-      if (k + 1 < r.spans.size() && r.spans[k].reached)
-        out << ',' << r.spans[k].own_share;
-      else
-        out << ',';
-    }
-    out << ',';
-    if (!r.spans.empty()) out << r.spans.back().own_share;
+    span_pair(out, r, &ScaleSpan::own_share, &ScaleSpan::largest_cluster);
     out << '\n';
   }
   if (!out.flush()) throw std::runtime_error("cannot write " + file.string());

@@ -46,6 +46,8 @@ struct ScaleSpan {
   // 64th), each weighed by its members, 0 where none did: what clusters of members on steps of
   // their own would leave of the members' particle-steps.
   double own_share = 0;
+  // Likewise EngineStats::largest_cluster: the largest cluster's share of the moving members.
+  double largest_cluster = 0;
 };
 
 // The spans the benchmark reports: to 60 s, to 600 s and to the end.

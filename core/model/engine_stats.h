@@ -31,8 +31,8 @@ struct EngineStats {
   // Local steps, every 64th step (0 at the others, or where no member moved): the members'
   // particle-steps if each cluster of them (joined by overlapping boxes) took the step its own
   // fastest member allows, over the common step's (1: nothing to save). A report: the members
-  // share one step.
-  double own_step_share = 0;
+  // share one step. And the largest cluster's share of the moving members (1: one cluster).
+  double own_step_share = 0, largest_cluster = 0;
 };
 
 }  // namespace sedem

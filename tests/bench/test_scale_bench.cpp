@@ -166,6 +166,9 @@ TEST(ScaleBench, ReportsTheFirstMinuteApart) {
   EXPECT_NEAR(std::stod(row.at("own_step_share_to_60")), spans[0].own_share, 1e-9);
   EXPECT_NEAR(std::stod(row.at("own_step_share")), spans[2].own_share, 1e-9);
   EXPECT_EQ(row.at("own_step_share_to_600"), "");
+  EXPECT_GT(spans[0].largest_cluster, 0);
+  EXPECT_LE(spans[0].largest_cluster, 1 + 1e-12);
+  EXPECT_NEAR(std::stod(row.at("largest_cluster_to_60")), spans[0].largest_cluster, 1e-9);
 }
 
 // Watching every step changes nothing: the same steps, the same readings, the same particles

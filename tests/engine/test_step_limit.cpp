@@ -89,6 +89,7 @@ TEST(OwnStepShare, APushedPairAloneIsOneCluster) {
     if (s.contacts != 2) continue;  // not touching yet: maybe two clusters
     ++looks;
     ASSERT_EQ(s.own_step_share, 1.0) << "at " << engine.time() << " s";
+    ASSERT_EQ(s.largest_cluster, 1.0);
   }
   EXPECT_GT(looks, 10);
 }
@@ -114,6 +115,7 @@ TEST(OwnStepShare, TwoPushedPairsFarApartAreTwoClusters) {
     if (s.contacts != 4 || s.own_step_share == 0) continue;  // both pairs touching, a look
     ++looks;
     EXPECT_NEAR(s.own_step_share, 0.553, 0.01) << "at " << engine.time() << " s";
+    EXPECT_EQ(s.largest_cluster, 0.5);  // two moving members of four
   }
   EXPECT_GT(looks, 20);
 }

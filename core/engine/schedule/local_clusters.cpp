@@ -1,5 +1,5 @@
 // What stepping each cluster of members on a step of its own would save: a report for the
-// benchmark (EngineStats::own_step_share); the members still share one step.
+// benchmark (EngineStats::own_step_share, largest_cluster); the members still share one step.
 
 #include <algorithm>
 
@@ -11,8 +11,9 @@ namespace sedem {
 // members fall into clusters joined by overlapping boxes (frozen members' included), each of
 // which could take the step its own fastest member allows. A member's rate is the step rule's:
 // its travel in a step over its pace radius (ExponentialIntegrator::fastest). The share is the
-// members' particle-steps at those steps over the common step's: 1 saves nothing.
-double LocalStepper::own_step_share() {
+// members' particle-steps at those steps over the common step's: 1 saves nothing. The largest
+// cluster's share of the moving members says whether the clusters percolate (1: one cluster).
+void LocalStepper::look_at_clusters() {
   Clusters& c = clusters_;
   const std::size_t n = e_.state.size();
   c.sets.assign(n);
@@ -37,10 +38,14 @@ double LocalStepper::own_step_share() {
     fastest = std::max(fastest, rate);
     moving += 1;
   }
-  if (!(fastest > 0)) return 0;  // not known: no member moved
-  double own = 0;
-  for (std::size_t k = 0; k < n; ++k) own += c.moving[k] * c.fastest[k];
-  return own / (moving * fastest);
+  if (!(fastest > 0)) return;  // not known: no member moved
+  double own = 0, largest = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    own += c.moving[k] * c.fastest[k];
+    largest = std::max(largest, c.moving[k]);
+  }
+  e_.stats.own_step_share = own / (moving * fastest);
+  e_.stats.largest_cluster = largest / moving;
 }
 
 }  // namespace sedem

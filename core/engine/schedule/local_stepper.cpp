@@ -236,9 +236,9 @@ void LocalStepper::step(double limit) {
     widened_.resize(kept);
   }
 
-  e_.stats.own_step_share = 0;
+  e_.stats.own_step_share = e_.stats.largest_cluster = 0;
   if (moving && e_.model.contact && e_.stats.steps % kClusterLookEvery == 0)
-    e_.stats.own_step_share = own_step_share();  // the members as they stepped
+    look_at_clusters();  // the members as they stepped
   if (moving) {
     // Which members touch something, from this step's projection, before any joins or leaves.
     if (e_.stats.steps % kReleaseEvery == 0) e_.integrator->mark_touching(e_.forces.stiffness);

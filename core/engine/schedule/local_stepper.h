@@ -282,7 +282,7 @@ class LocalStepper {
   Release release_;
   // What clusters of members on steps of their own would save (local_clusters.cpp), looked at
   // every kClusterLookEvery steps: the scratch of the look.
-  double own_step_share();
+  void look_at_clusters();
   static constexpr std::int64_t kClusterLookEvery = 64;
   struct Clusters {
     DisjointSets sets;            // members joined by overlapping boxes
