@@ -81,7 +81,7 @@ class SpanTally {
     fast_ += double(stats.fast_set);
     substeps_ += double(stats.substeps);
     split_steps_ += stats.substeps > 0;
-    if (stats.own_step_share > 0) {  // weighed by the members it spoke for
+    if (stats.own_step_share > 0) {  // a look, weighed by the members at the step's end
       own_share_ += stats.own_step_share * double(stats.members);
       largest_cluster_ += stats.largest_cluster * double(stats.members);
       own_members_ += double(stats.members);
