@@ -329,13 +329,20 @@ int run_in(const RunOptions& options, const RunHooks& hooks, RunContext& ctx) {
       fail(record, status, exit_code::io_failure,
            std::string("the checkpoint could not be written: ") + e.what());
     }
-  } else if (status == exit_code::ok) {
-    remove_checkpoint(out);
-    if (!scene.output.particles) {
-      std::error_code ignored;  // a leftover replay/ costs disk only; the record lists it
-      fs::remove_all(replay_folder(scene, out), ignored);
-    }
   }
+  // A complete run's checkpoint (and, without the particle series, its replay/) goes only once
+  // run.json says it is complete: a run killed while it writes its outputs still resumes. (Taken
+  // here, before the outputs, a kill in between left neither a checkpoint nor a complete run.)
+  const std::string replay = replay_folder(scene, out).lexically_relative(out).generic_string();
+  auto listed = [&] {
+    std::vector<std::string> files = run_files(out);
+    if (status != exit_code::ok) return files;
+    std::erase_if(files, [&](const std::string& f) {
+      return f == kCheckpointFile || f == kCheckpointRecordFile ||
+             (!scene.output.particles && f.rfind(replay + "/", 0) == 0);
+    });
+    return files;
+  };
   try {
     simulation.observers().finish();
     record.results = write_test_outputs(scene, run_observers, out);
@@ -363,7 +370,7 @@ int run_in(const RunOptions& options, const RunHooks& hooks, RunContext& ctx) {
   record.wall_time = wall_so_far();
   record.particle_steps = simulation.stats().particle_steps;
   // The page that shows the run as a whole, from the record as it is written next.
-  record.files = run_files(out);
+  record.files = listed();
   try {
     write_run_report(run_record_json(record, scene), out);
   } catch (const std::exception& e) {
@@ -372,7 +379,7 @@ int run_in(const RunOptions& options, const RunHooks& hooks, RunContext& ctx) {
     record.status = "failed";
     remove_temporary_files(out);
   }
-  record.files = run_files(out);
+  record.files = listed();
   try {
     write_run_record(record, scene, out / "run.json");
   } catch (const std::exception& e) {
@@ -380,6 +387,13 @@ int run_in(const RunOptions& options, const RunHooks& hooks, RunContext& ctx) {
     remove_temporary_files(out);
     // Never left "running": the short record in the place of the long one.
     write_failed_record_in_place(record, out / "run.json");
+  }
+  if (status == exit_code::ok) {
+    remove_checkpoint(out);
+    if (!scene.output.particles) {
+      std::error_code ignored;  // a leftover replay/ costs disk only
+      fs::remove_all(replay_folder(scene, out), ignored);
+    }
   }
   if (status == exit_code::ok && !options.quiet)
     if (const auto& r = record.results;
