@@ -38,6 +38,9 @@ struct IntegratorConfig {
   // with carried steps: the grains carried further than their own radius allows take exact
   // sub-steps of their own within the step
   bool carried_substeps = false;
+  // local steps where grains meet: each cluster of members (linked by their candidate lists)
+  // steps at its own fastest member's rule, a slow one lagging the common step
+  bool own_steps = false;
   double max_coast = 60.0;  // s, longest window of a coasting grain
   // local steps: where a member's radius is more than a fiftieth of the mean spacing, its box's
   // pace radius is this many times its travel in the last step over crossing_fraction, if that

@@ -30,9 +30,12 @@ struct EngineStats {
   std::size_t fast_set = 0, substeps = 0;
   // Local steps, every 64th step (0 at the others, or where no member moved): the members'
   // particle-steps if each cluster of them (joined by overlapping boxes) took the step its own
-  // fastest member allows, over the common step's (1: nothing to save). A report: the members
-  // share one step. And the largest cluster's share of the moving members (1: one cluster).
+  // fastest member allows, over the common step's (1: nothing to save). A report (of what
+  // integrator.own_steps would take, from the clusters of the one-step scheme). And the largest
+  // cluster's share of the moving members (1: one cluster).
   double own_step_share = 0, largest_cluster = 0;
+  // Own steps (integrator.own_steps): members lagging the common step at the step's end.
+  std::size_t lagging = 0;
 };
 
 }  // namespace sedem

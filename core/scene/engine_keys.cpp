@@ -72,6 +72,14 @@ void describe(IntegratorConfig& c, Schema& s) {
          "of their own inside it, each within crossing_fraction of their own radius, the others "
          "held still (no pair of the two can meet within the step). Contacts are then resolved "
          "as with every grain at its own radius, at the carried steps' count of common steps.");
+  s.flag("integrator.own_steps", &c.own_steps,
+         "exponential with local_steps, suspension contacts and no carried steps: the members "
+         "fall into clusters that their candidate lists link (no pair of two clusters can meet "
+         "before the lists are rebuilt), and a cluster whose own fastest member allows twice the "
+         "common step or more lags it, taking one step of its own (at most what its own members' "
+         "rule allows) when it must. Every cluster catches up at each reading, at every 16th "
+         "common step and when another links to it; none lags below 64 moving members. Off: "
+         "every member takes the common step.");
   s.flag("integrator.retire_below_instruments", &c.retire_below,
          "exponential with local_steps and at least one instrument: a grain that falls below "
          "the lowest instrument (less 1 cm) leaves the simulation and falls freely onto a coarse "

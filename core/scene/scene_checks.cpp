@@ -284,6 +284,13 @@ void check_scene(const Scene& scene, const SceneOrigins& origins) {
     check.fail("integrator.carried_substeps",
                "needs carried steps: set integrator.carried_fraction in (0, 1] (0.8 lets "
                "the step be what the coarse grains alone allow)");
+  if (scene.integrator.own_steps &&
+      !(scene.integrator.method == "exponential" && scene.integrator.local_steps &&
+        scene.forces.suspension_contacts && !(scene.integrator.carried_fraction > 0)))
+    check.fail("integrator.own_steps",
+               "needs integrator.method = exponential, integrator.local_steps = true, "
+               "forces.suspension_contacts = true and integrator.carried_fraction = 0 (clusters "
+               "of members on steps of their own are an alternative to carried steps)");
   const double box_steps = scene.integrator.member_box_steps;
   if (box_steps != 0 && !(box_steps >= 2))
     check.fail("integrator.member_box_steps",

@@ -197,6 +197,18 @@ TEST(SceneChecks, CarriedSubstepsNeedCarriedSteps) {
   EXPECT_EQ(test::scene_error(on + "carried_fraction = 0.8\n", {}), "");
 }
 
+// Own steps are an alternative to carried steps, and need members that meet: refused with
+// either of those missing, accepted alone.
+TEST(SceneChecks, OwnStepsNeedContactsEverywhereAndNoCarriedSteps) {
+  const std::string on = "[integrator]\nown_steps = true\n";
+  EXPECT_EQ(test::scene_error(on, {}), "");
+  const std::string e = test::scene_error(on + "carried_fraction = 0.8\n", {});
+  EXPECT_NE(e.find("bad.toml:2: integrator.own_steps = true needs"), std::string::npos) << e;
+  EXPECT_NE(e.find("integrator.carried_fraction = 0"), std::string::npos) << e;
+  EXPECT_NE(test::scene_error(on, {"integrator.local_steps=false"}).find("integrator.own_steps"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace sedem
 

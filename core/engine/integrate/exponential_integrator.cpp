@@ -45,6 +45,7 @@ class ExponentialIntegrator final : public Integrator {
   double next_step(const PassFacts&) override { return step_; }
 
   void advance(EngineState& s, const ForceAccumulators& f, double dt, Blowup& blowup) override {
+    parts_ = false;
     split_ = substeps_ && dt > 0 && !ctx_.lists->stale && find_fast_set(s, dt);
     if (split_)
       advance_split(s, f, dt, blowup);
@@ -57,6 +58,44 @@ class ExponentialIntegrator final : public Integrator {
     else
       step_ = choose_step(s);
   }
+
+  void begin_parts() override {
+    split_ = false;
+    parts_ = true;
+    touched_.clear();
+    facts_ = ProjectionFacts{};
+  }
+  void advance_part(EngineState& s, const ForceAccumulators& f, double dt,
+                    const std::vector<std::uint32_t>& only, const std::vector<std::uint32_t>& rows,
+                    const std::uint8_t* aside, Blowup& blowup) override {
+    const ProjectionFacts facts = move(s, f, dt, blowup, &only, aside, &rows);
+    facts_.max_overlap_ratio = std::max(facts_.max_overlap_ratio, facts.max_overlap_ratio);
+    projection_.append_touching(touched_);
+  }
+  void end_parts(const EngineState& s) override {
+    std::sort(touched_.begin(), touched_.end());
+    facts_.touching = std::size_t(std::unique(touched_.begin(), touched_.end()) - touched_.begin());
+    touched_.resize(facts_.touching);
+    step_ = choose_step(s);
+  }
+  void own_rates(const EngineState& s, const std::vector<std::uint32_t>* only,
+                 std::vector<double>& rate) const override {
+    const double* box_pace =
+        ctx_.allowance && !ctx_.allowance->empty() ? ctx_.allowance->data() : nullptr;
+    rate.resize(s.size());
+    const std::size_t count = only ? only->size() : s.size();
+    for (std::size_t m = 0; m < count; ++m) {
+      const std::size_t k = only ? (*only)[m] : m;
+      if (s.frozen[k]) {
+        rate[k] = 0;
+        continue;
+      }
+      const double d = s.diameter[k];
+      const double pace = box_pace ? std::min(0.5 * d, box_pace[s.origin[k]]) : 0.5 * d;
+      rate[k] = floored_speed(s, k) / pace;
+    }
+  }
+  double step_at_rate(double radii_per_s) const override { return limited(radii_per_s); }
 
   void refresh_step(const EngineState& s, std::size_t appended_from) override {
     if (appended_from == 0 || appended_from > s.size()) {
@@ -79,7 +118,7 @@ class ExponentialIntegrator final : public Integrator {
     facts.min_contact_mass = 0;
   }
   void mark_touching(std::vector<double>& touching) const override {
-    if (!split_) return projection_.mark_touching(touching);
+    if (!split_ && !parts_) return projection_.mark_touching(touching);
     std::fill(touching.begin(), touching.end(), 0.0);
     for (std::uint32_t p : touched_) touching[p] = 1.0;
   }
@@ -465,6 +504,7 @@ class ExponentialIntegrator final : public Integrator {
   // set and the others (state indices), by sample index those set aside in a run, the
   // particles in contact after it, and the sub-steps it took.
   bool substeps_ = false, split_ = false;
+  bool parts_ = false;  // the last step was taken in parts (own steps): touched_ holds its contacts
   static constexpr double kFastSkin = 0.5;  // the projection's skin, in smaller radii
   std::vector<std::uint8_t> in_fast_, aside_;
   std::vector<std::uint32_t> fast_, others_, touched_, fast_rows_;

@@ -135,6 +135,27 @@ class Integrator {
   virtual SubstepReport substeps() const { return {}; }
   // For the step next_step gives; see StepLimit.
   virtual StepLimit step_limit() const { return {}; }
+  // Own steps (integrator.own_steps): a step taken in parts instead of one advance. Between
+  // begin_parts and end_parts each advance_part moves the members `only` (state indices, none
+  // frozen) over its own dt, the caller holding every other particle frozen and, by sample
+  // index, `aside` (whose pairs' forces the projection keeps); the projection reads `rows` only
+  // (those holding a pair with one of them). end_parts reports the contacts of every part
+  // (contact_facts, mark_touching) and chooses the next step as advance would.
+  virtual void begin_parts() {}
+  virtual void advance_part(EngineState&, const ForceAccumulators&, double /*dt*/,
+                            const std::vector<std::uint32_t>& /*only*/,
+                            const std::vector<std::uint32_t>& /*rows*/,
+                            const std::uint8_t* /*aside*/, Blowup&) {}
+  virtual void end_parts(const EngineState&) {}
+  // Own steps: the rate of members `only` (state indices; all if nullptr) under the step rule,
+  // into rate (sized to the state): its speed, at least its settling speed, over its pace
+  // radius (0 if frozen). And the longest step a rate allows: crossing_fraction over it, at most
+  // the ceiling.
+  virtual void own_rates(const EngineState&, const std::vector<std::uint32_t>* /*only*/,
+                         std::vector<double>& rate) const {
+    rate.clear();
+  }
+  virtual double step_at_rate(double /*radii_per_s*/) const { return 0; }
 };
 
 std::unique_ptr<Integrator> make_integrator(const IntegratorConfig& config,

@@ -38,6 +38,12 @@ void LocalStepper::save(std::ostream& out) const {
     widened.insert(widened.end(),
                    {double(a.id), a.time, a.after.x0, a.after.x1, a.after.y0, a.after.y1});
   write_vector(out, widened);
+  if (own_steps_) {  // the lagging members: id, the time each is at
+    std::vector<double> lags;
+    for (std::uint32_t id : e_.state.origin)
+      if (at_[id] >= 0) lags.insert(lags.end(), {double(id), at_[id]});
+    write_vector(out, lags);
+  }
 }
 
 void LocalStepper::load(std::istream& in) {
@@ -65,6 +71,23 @@ void LocalStepper::load(std::istream& in) {
       throw std::runtime_error("damaged checkpoint: a widened box names no grain");
     widened_.push_back({std::uint32_t(id), widened[k + 1], Box{},
                         Box{widened[k + 2], widened[k + 3], widened[k + 4], widened[k + 5]}, true});
+  }
+  at_.assign(own_steps_ ? kind_.size() : 0, kInSync);
+  lagging_ = 0;
+  lag_cap_ = HUGE_VAL;
+  own_.valid = false;
+  own_.lagging_stale = true;
+  if (own_steps_) {
+    std::vector<double> lags;
+    read_vector_upto(in, lags, 2 * std::uint64_t(kind_.size()));
+    for (std::size_t k = 0; k + 2 <= lags.size(); k += 2) {
+      const double id = lags[k], at = lags[k + 1];
+      if (!(id >= 0 && id < double(kind_.size())) || !is_member(kind_[std::size_t(id)]) ||
+          !(at >= 0 && std::isfinite(at)))
+        throw std::runtime_error("damaged checkpoint: a lagging member's record is bad");
+      at_[std::size_t(id)] = at;
+      ++lagging_;
+    }
   }
   if (land_y_.size() != kind_.size() || bed_.empty())
     throw std::runtime_error("damaged checkpoint: the coarse bed does not fit the sample");
@@ -120,7 +143,7 @@ std::string LocalStepper::violation() const {
       return "member " + std::to_string(k) + " (grain " + std::to_string(id) + ")";
     };
     if (m.x != track_[id].flight.x || m.y != track_[id].flight.y ||
-        m.cell != track_[id].deposit_cell)
+        m.cell != track_[id].deposit_cell || m.at != (own_steps_ ? at_[id] : kInSync))
       return member() + ": its copy of its track differs from the track";
     if (e_.model.drag == DragLaw::di_felice &&
         m.cell != e_.voidage.cell(e_.state.x[k], e_.state.y[k]))

@@ -27,6 +27,7 @@ void LocalStepper::engage(std::uint32_t id, const FreeFlight::Point& p, bool fro
   e_.lists.y0.push_back(p.y);
   e_.forces.stiffness.push_back(0.0);
   member_[id] = std::uint32_t(k);
+  if (own_steps_) at_[id] = kInSync;
   kind_[id] = frozen ? GrainKind::frozen : GrainKind::moving;
   move_deposit(id, p.x, p.y);
   member_track_.push_back({track_[id].flight.x, track_[id].flight.y, track_[id].deposit_cell});
@@ -74,6 +75,7 @@ void LocalStepper::anchor(std::size_t k) {
     boxes_.set(id, member_box(k),
                box_tag(e_.state.frozen[k] ? GrainKind::frozen : GrainKind::moving));
   if (paced()) note_allowance(id, k);
+  if (own_steps_) own_.rerate.push_back(std::uint32_t(k));  // its pace may have changed
 }
 
 // The radius in which member k's box lets it move, read off the box itself (so that a
@@ -267,7 +269,7 @@ void LocalStepper::index_members() {
     const std::uint32_t id = e_.state.origin[k];
     member_[id] = std::uint32_t(k);
     const Track& t = track_[id];
-    member_track_[k] = {t.flight.x, t.flight.y, t.deposit_cell};
+    member_track_[k] = {t.flight.x, t.flight.y, t.deposit_cell, own_steps_ ? at_[id] : kInSync};
   }
 }
 

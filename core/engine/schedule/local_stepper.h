@@ -45,7 +45,8 @@
 // local_membership.cpp (engage, release, settle),
 // local_retirement.cpp (the coarse bed), local_checkpoint.cpp (its state in checkpoints, and
 // the scheme's promise checked for tests), local_clusters.cpp (what clusters of members on
-// steps of their own would save: a report).
+// steps of their own would save: a report), local_own_steps.cpp (clusters of members on steps
+// of their own: integrator.own_steps).
 
 #include <cmath>
 #include <cstddef>
@@ -229,6 +230,7 @@ class LocalStepper {
   struct MemberTrack {
     double x = 0, y = 0;
     std::uint32_t cell = 0;
+    double at = -1;  // own steps: at_ (kInSync)
   };
   std::vector<MemberTrack> member_track_;
   std::vector<Lane> lanes_;
@@ -293,6 +295,78 @@ class LocalStepper {
     }
   };
   Clusters clusters_;
+  // Own steps (integrator.own_steps; local_own_steps.cpp): clusters of members linked by their
+  // candidate lists, a slow one lagging the common step.
+  bool own_steps_ = false;
+  // Moving members below which no cluster lags: the passes over the members and the lists that
+  // lagging takes cost more than it saves.
+  static constexpr std::size_t kOwnStepsFrom = 64;
+  // By sample index: the time a lagging member is at (its last step's end), kInSync for the
+  // others; member_track_ holds a copy in the state's order.
+  static constexpr double kInSync = -1;
+  std::vector<double> at_;
+  double lag_of(std::size_t k) const {
+    const double at = member_track_[k].at;
+    return at < 0 ? 0.0 : e_.time - at;
+  }
+  void set_at(std::size_t k, double at) { at_[e_.state.origin[k]] = member_track_[k].at = at; }
+  std::size_t lagging_ = 0;    // members lagging now
+  double lag_cap_ = HUGE_VAL;  // the longest common step no lagging cluster's own step forbids
+  struct OwnSteps {
+    DisjointSets sets;                // moving members linked by their lists' pairs, by state index
+    std::vector<double> rate;         // by state index: its rate under the step rule
+    std::vector<double> horizon;      // by root: its own step (its fastest member's)
+    std::vector<double> most, least;  // by root: its members' largest and smallest lag
+    std::vector<std::uint32_t> part_of;  // by state index: its part in this run, or kNoMember
+    std::vector<std::uint32_t> moving;   // state indices of the moving members
+    std::vector<std::uint8_t> aside;     // by sample index: held still in the part running
+    std::vector<std::pair<double, std::uint32_t>> catching;  // (lag, state index), scratch
+    std::vector<std::uint32_t> moved;                        // settle_lags' scratch
+    std::vector<std::uint32_t> rerate;  // state indices anchored since the rates were taken
+    struct Part {
+      double dt = 0;
+      int phase = 1;  // 0: ends at the step's start (a catch-up before it), 1: at its end
+      std::vector<std::uint32_t> members, rows;
+    };
+    std::vector<Part> parts;
+    std::size_t used = 0;  // parts of this run
+    // What the clusters were found from: the lists' builds and rows, the members.
+    bool valid = false, rates_valid = false;
+    std::int64_t builds = 0;
+    std::size_t rows = 0, members = 0;
+    std::size_t clean_rows = 0;  // rows up to here link no two lags (links_two_lags)
+    // The lagging clusters the members' step left (their lag, their own step), while the lists
+    // link no two lags; lagging_stale once a catch-up outside it changed them.
+    struct Lagging {
+      double at, horizon;
+    };
+    std::vector<Lagging> lagging_roots;
+    bool lagging_stale = true;
+    std::vector<std::uint8_t> mark;  // by root, scratch
+    std::size_t bytes() const;
+  };
+  OwnSteps own_;
+  void find_clusters();
+  bool clusters_current() const;
+  bool links_two_lags();
+  // The part of this run that steps over dt and ends at the step's start (phase 0) or end (1),
+  // added if there is none yet.
+  std::size_t part_of_dt(double dt, int phase);
+  // Runs the parts added since own_.used was zeroed, phase 0 first; returns the member-steps
+  // taken (a blow-up is reported at time `at`).
+  std::size_t run_parts(double at);
+  // The members' step over dt (own steps), in parts: `all` brings every cluster to its end.
+  // Returns the member-steps taken.
+  std::size_t advance_own(double dt, bool all, double at);
+  // Clusters holding members of different lags (a list now links them) catch up, and at a
+  // step's start (dt > 0) those that a step of dt would carry past their own step, with what
+  // their moves bring (new boxes, joiners, a rebuild); then lag_cap_. True if any moved (the
+  // step is then chosen again).
+  bool settle_lags(double dt);
+  // After members moved outside the members' step: their voidage deposits, the lists'
+  // margins, their boxes.
+  void after_own_moves(const std::vector<std::uint32_t>& moved);
+  void reanchor_if_used(std::size_t k);
   double registry_cell_ = 1e-3, travel_ = 1e-3;
   std::size_t settled_ = 0;
   double retire_height_ = 0;    // 0: no grain retires

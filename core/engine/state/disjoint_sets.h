@@ -22,6 +22,10 @@ class DisjointSets {
     parent_.resize(n);
     for (std::size_t i = 0; i < n; ++i) parent_[i] = std::uint32_t(i);
   }
+  // Singletons appended up to n (the sets of 0..size()-1 stand).
+  void grow(std::size_t n) {
+    for (std::size_t i = parent_.size(); i < n; ++i) parent_.push_back(std::uint32_t(i));
+  }
   // Makes i a singleton again; only sound once every index of i's set is made one, so callers
   // that reset a few sets (not assign) reset all of each set's indices.
   void make_single(std::uint32_t i) { parent_[i] = i; }
