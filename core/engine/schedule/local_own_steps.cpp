@@ -23,12 +23,6 @@
 
 namespace sedem {
 
-bool LocalStepper::clusters_current() const {
-  const OwnSteps& o = own_;
-  return o.valid && o.builds == e_.stats.list_builds && o.rows == e_.lists.rows() &&
-         o.members == e_.state.size();
-}
-
 // The lists change by a build, or by rows appended for joiners and widenings (the others'
 // rows stand): a build finds the clusters anew, appended rows join them further. A member
 // frozen since still links its own: a larger cluster is safe.
@@ -191,6 +185,17 @@ std::size_t LocalStepper::run_parts(double at) {
 std::size_t LocalStepper::advance_own(double dt, bool all, double at) {
   OwnSteps& o = own_;
   EngineState& s = e_.state;
+  if (all && lagging_ == 0) {  // nothing lags, nothing may start to: one advance, no clusters
+    o.lagging_roots.clear();
+    o.lagging_stale = false;
+    o.rates_valid = false;
+    Blowup blowup;
+    e_.integrator->advance(s, e_.forces, dt, blowup);
+    if (blowup.found) e_.throw_blowup(blowup, at);
+    std::size_t moving = 0;
+    for (std::uint8_t f : s.frozen) moving += f == 0;
+    return moving;
+  }
   find_clusters();
   const std::size_t n = s.size();
   o.used = 0;

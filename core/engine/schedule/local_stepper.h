@@ -288,10 +288,12 @@ class LocalStepper {
   static constexpr std::int64_t kClusterLookEvery = 64;
   struct Clusters {
     DisjointSets sets;            // members joined by overlapping boxes
+    std::vector<double> rate;     // by state index: the step rule's (Integrator::own_rates)
     std::vector<double> fastest;  // by root: the cluster's fastest member's rate
     std::vector<double> moving;   // by root: its moving members
     std::size_t bytes() const {
-      return sets.bytes() + (fastest.capacity() + moving.capacity()) * sizeof(double);
+      return sets.bytes() +
+             (rate.capacity() + fastest.capacity() + moving.capacity()) * sizeof(double);
     }
   };
   Clusters clusters_;
@@ -337,7 +339,7 @@ class LocalStepper {
     std::size_t rows = 0, members = 0;
     std::size_t clean_rows = 0;  // rows up to here link no two lags (links_two_lags)
     // The lagging clusters the members' step left (their lag, their own step), while the lists
-    // link no two lags; lagging_stale once a catch-up outside it changed them.
+    // link no two lags; lagging_stale after a checkpoint is loaded (the list is not kept).
     struct Lagging {
       double at, horizon;
     };
@@ -348,7 +350,6 @@ class LocalStepper {
   };
   OwnSteps own_;
   void find_clusters();
-  bool clusters_current() const;
   bool links_two_lags();
   // The part of this run that steps over dt and ends at the step's start (phase 0) or end (1),
   // added if there is none yet.
