@@ -133,6 +133,9 @@ void LocalStepper::load(std::istream& in) {
 // grain's disc overlaps another's). Also: the members' copies of their tracks match the tracks,
 // and a member's weight lies in the voidage cell it is in.
 std::string LocalStepper::violation() const {
+  if (own_steps_ && member_at_.size() != e_.state.size())
+    return std::to_string(member_at_.size()) + " lagging times for " +
+           std::to_string(e_.state.size()) + " members";
   if (member_track_.size() != e_.state.size())
     return std::to_string(member_track_.size()) + " copies of tracks for " +
            std::to_string(e_.state.size()) + " members";
@@ -143,7 +146,7 @@ std::string LocalStepper::violation() const {
       return "member " + std::to_string(k) + " (grain " + std::to_string(id) + ")";
     };
     if (m.x != track_[id].flight.x || m.y != track_[id].flight.y ||
-        m.cell != track_[id].deposit_cell || m.at != (own_steps_ ? at_[id] : kInSync))
+        m.cell != track_[id].deposit_cell || (own_steps_ && member_at_[k] != at_[id]))
       return member() + ": its copy of its track differs from the track";
     if (e_.model.drag == DragLaw::di_felice &&
         m.cell != e_.voidage.cell(e_.state.x[k], e_.state.y[k]))

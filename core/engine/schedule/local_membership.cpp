@@ -27,7 +27,10 @@ void LocalStepper::engage(std::uint32_t id, const FreeFlight::Point& p, bool fro
   e_.lists.y0.push_back(p.y);
   e_.forces.stiffness.push_back(0.0);
   member_[id] = std::uint32_t(k);
-  if (own_steps_) at_[id] = kInSync;
+  if (own_steps_) {
+    at_[id] = kInSync;
+    member_at_.push_back(kInSync);
+  }
   kind_[id] = frozen ? GrainKind::frozen : GrainKind::moving;
   move_deposit(id, p.x, p.y);
   member_track_.push_back({track_[id].flight.x, track_[id].flight.y, track_[id].deposit_cell});
@@ -122,6 +125,10 @@ void LocalStepper::remove_member(std::size_t k) {
   }
   e_.state.resize(last);
   member_track_.resize(last);
+  if (own_steps_) {
+    member_at_[k] = member_at_[last];
+    member_at_.resize(last);
+  }
   e_.lists.search.resize(last);
   e_.lists.x0.resize(last);
   e_.lists.y0.resize(last);
@@ -264,12 +271,14 @@ void LocalStepper::settle_members() {
 
 void LocalStepper::index_members() {
   member_track_.resize(e_.state.size());
+  if (own_steps_) member_at_.resize(e_.state.size());
   for (std::size_t k = 0; k < e_.state.size(); ++k) {
     prefetch_track(k + kPrefetchAhead);
     const std::uint32_t id = e_.state.origin[k];
     member_[id] = std::uint32_t(k);
     const Track& t = track_[id];
-    member_track_[k] = {t.flight.x, t.flight.y, t.deposit_cell, own_steps_ ? at_[id] : kInSync};
+    member_track_[k] = {t.flight.x, t.flight.y, t.deposit_cell};
+    if (own_steps_) member_at_[k] = at_[id];
   }
 }
 

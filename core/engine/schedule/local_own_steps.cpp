@@ -245,15 +245,15 @@ std::size_t LocalStepper::advance_own(double dt, bool all, double at) {
       o.parts[part_of_dt(lag, 1)].members.push_back(k);
       set_at(k, kInSync);
     } else {
-      if (member_track_[k].at < 0) set_at(k, e_.time);  // from the step's start
-      if (!o.mark[root]) o.lagging_roots.push_back({member_track_[k].at, horizon});
+      if (member_at_[k] < 0) set_at(k, e_.time);  // from the step's start
+      if (!o.mark[root]) o.lagging_roots.push_back({member_at_[k], horizon});
       o.mark[root] = 1;
     }
   }
   o.lagging_stale = false;
   const std::size_t steps = run_parts(at);
   lagging_ = 0;
-  for (std::size_t k = 0; k < n; ++k) lagging_ += member_track_[k].at >= 0;
+  for (std::size_t k = 0; k < n; ++k) lagging_ += member_at_[k] >= 0;
   return steps;
 }
 
@@ -296,7 +296,7 @@ bool LocalStepper::settle_lags(double dt) {
         set_at(k, kInSync);
       } else {
         lag_cap_ = std::min(lag_cap_, o.horizon[root] - lag);
-        if (!o.mark[root]) o.lagging_roots.push_back({member_track_[k].at, o.horizon[root]});
+        if (!o.mark[root]) o.lagging_roots.push_back({member_at_[k], o.horizon[root]});
         o.mark[root] = 1;
       }
     }
@@ -329,10 +329,10 @@ bool LocalStepper::links_two_lags() {
   for (std::size_t row = std::max(o.rows, o.clean_rows); row < e_.lists.rows(); ++row) {
     const std::uint32_t i = e_.lists.particle_of(row, e_.grid);
     if (i >= n || s.frozen[i]) continue;
-    const double at = member_track_[i].at;
+    const double at = member_at_[i];
     for (std::uint32_t q = start[row]; q < start[row + 1]; ++q) {
       const std::uint32_t j = list[q];
-      if (j < n && !s.frozen[j] && member_track_[j].at != at) return true;
+      if (j < n && !s.frozen[j] && member_at_[j] != at) return true;
     }
   }
   o.clean_rows = e_.lists.rows();
@@ -354,16 +354,6 @@ void LocalStepper::after_own_moves(const std::vector<std::uint32_t>& moved) {
   e_.lists.stale = e_.lists.stale || e_.lists.moved_beyond_margin(s);
   wake_around(kNoMember);
   if (members_changed_) e_.extend_lists();
-}
-
-void LocalStepper::reanchor_if_used(std::size_t k) {
-  const std::uint32_t id = e_.state.origin[k];
-  const double dx = e_.state.x[k] - member_track_[k].x;
-  const double dy = e_.state.y[k] - member_track_[k].y;
-  const double pace = kReanchor * (paced() ? e_.allowance[id] : 0.5 * e_.state.diameter[k]);
-  if (dx * dx + dy * dy <= pace * pace) return;
-  wake_.push_back(id);
-  ++e_.stats.box_moves;
 }
 
 std::size_t LocalStepper::OwnSteps::bytes() const {

@@ -42,7 +42,7 @@ void LocalStepper::retire_members() {
   wake_.clear();
   for (std::size_t k = 0; k < e_.state.size(); ++k)
     if (e_.state.y[k] + 0.5 * e_.state.diameter[k] < retire_height_ &&
-        member_track_[k].at < 0)  // lagging (own steps): not at the members' time
+        !(own_steps_ && member_at_[k] >= 0))  // lagging (own steps): not at the members' time
       wake_.push_back(e_.state.origin[k]);
   std::sort(wake_.begin(), wake_.end());
   for (std::uint32_t id : wake_) {

@@ -64,6 +64,7 @@ LocalStepper::LocalStepper(EngineParts& parts) : e_(parts) {
   // grain (a sixth of the memory at a million particles) goes back.
   e_.state = EngineState{};
   member_track_.clear();
+  member_at_.clear();
   e_.forces = ForceAccumulators{};
   std::vector<double>().swap(e_.lists.search);
   std::vector<double>().swap(e_.lists.x0);
@@ -301,6 +302,17 @@ void LocalStepper::step(double limit) {
   count_lanes();
 }
 
+// A member that used its allowance takes a new box (wake_around), whatever it then reaches joining.
+void LocalStepper::reanchor_if_used(std::size_t k) {
+  const std::uint32_t id = e_.state.origin[k];
+  const double dx = e_.state.x[k] - member_track_[k].x;
+  const double dy = e_.state.y[k] - member_track_[k].y;
+  const double pace = kReanchor * (paced() ? e_.allowance[id] : 0.5 * e_.state.diameter[k]);
+  if (dx * dx + dy * dy <= pace * pace) return;
+  wake_.push_back(id);
+  ++e_.stats.box_moves;
+}
+
 // At a step's end: the lists are then always fresh, so a checkpoint (which keeps whether they
 // are stale, not why) resumes to the same step.
 void LocalStepper::fresh_step() {
@@ -349,7 +361,7 @@ std::size_t LocalStepper::bytes() const {
   return cap(kind_) + cap(track_) + cap(member_) + cap(wake_) + boxes_.bytes() + cap(land_y_) +
          cap(bed_) + cap(ahead_slot_) + cap(blocker_) + cap(ahead_) + cap(widened_) +
          cap(leaving_) + release_.bytes() + clusters_.bytes() + own_.bytes() + cap(at_) +
-         lane_bytes;
+         cap(member_at_) + lane_bytes;
 }
 
 }  // namespace sedem

@@ -230,7 +230,6 @@ class LocalStepper {
   struct MemberTrack {
     double x = 0, y = 0;
     std::uint32_t cell = 0;
-    double at = -1;  // own steps: at_ (kInSync)
   };
   std::vector<MemberTrack> member_track_;
   std::vector<Lane> lanes_;
@@ -305,14 +304,15 @@ class LocalStepper {
   // no lagging cluster; at 64 it has.
   static constexpr std::size_t kOwnStepsFrom = 64;
   // By sample index: the time a lagging member is at (its last step's end), kInSync for the
-  // others; member_track_ holds a copy in the state's order.
+  // others; member_at_ holds a copy in the state's order (beside the members' tracks, not in
+  // them: a wider MemberTrack slowed every pass over the members, own steps on or off).
   static constexpr double kInSync = -1;
-  std::vector<double> at_;
+  std::vector<double> at_, member_at_;
   double lag_of(std::size_t k) const {
-    const double at = member_track_[k].at;
+    const double at = member_at_[k];
     return at < 0 ? 0.0 : e_.time - at;
   }
-  void set_at(std::size_t k, double at) { at_[e_.state.origin[k]] = member_track_[k].at = at; }
+  void set_at(std::size_t k, double at) { at_[e_.state.origin[k]] = member_at_[k] = at; }
   std::size_t lagging_ = 0;    // members lagging now
   double lag_cap_ = HUGE_VAL;  // the longest common step no lagging cluster's own step forbids
   struct OwnSteps {
