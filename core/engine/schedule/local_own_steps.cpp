@@ -41,9 +41,21 @@ void LocalStepper::find_clusters() {
     } else {
       o.sets.grow(n);
     }
+    o.row_member.resize(e_.lists.rows());
     for (std::size_t row = anew ? 0 : o.rows; row < e_.lists.rows(); ++row) {
       const std::uint32_t i = e_.lists.particle_of(row, e_.grid);
-      if (i >= n || s.frozen[i]) continue;
+      std::uint32_t& member = o.row_member[row];
+      member = kNoMember;
+      if (i >= n) continue;
+      if (s.frozen[i]) {  // its moving partners are linked by other rows, if at all
+        for (std::uint32_t q = start[row]; q < start[row + 1]; ++q) {
+          const std::uint32_t j = list[q];
+          if (j >= n || s.frozen[j] || j == member) continue;
+          member = member == kNoMember ? j : OwnSteps::kMixedRow;
+        }
+        continue;
+      }
+      member = i;
       for (std::uint32_t q = start[row]; q < start[row + 1]; ++q) {
         const std::uint32_t j = list[q];
         if (j < n && !s.frozen[j]) o.sets.unite(i, j);
@@ -74,9 +86,11 @@ void LocalStepper::find_clusters() {
   o.most.assign(n, 0.0);
   o.least.assign(n, HUGE_VAL);
   lagging_ = 0;
+  o.cluster_size.assign(n, 0);
   for (std::size_t k = 0; k < n; ++k) {
     if (s.frozen[k]) continue;
     const std::uint32_t root = o.sets.flat_root(std::uint32_t(k));
+    ++o.cluster_size[root];
     o.horizon[root] = std::max(o.horizon[root], o.rate[k]);
     const double lag = lag_of(k);
     o.most[root] = std::max(o.most[root], lag);
@@ -140,7 +154,48 @@ std::size_t LocalStepper::run_parts(double at) {
         if (list[q] < n) take(list[q]);
     }
   };
-  if (!twice) find_rows(kNoMember);
+  // Where every part holds whole clusters of the lists and frozen flags this run reads, a row's
+  // pairs are those of one cluster, in its member's part or in none: only the rows of frozen
+  // grains with partners in two clusters are read pair by pair.
+  bool whole_clusters = !twice && o.valid && o.builds == e_.stats.list_builds &&
+                        o.rows == e_.lists.rows() && o.members == n;
+  if (whole_clusters) {
+    o.tally.resize(n, 0);
+    o.root_part.resize(n, kNoMember);
+    for (std::size_t p = 0; p < o.used; ++p)
+      for (std::uint32_t k : o.parts[p].members) {
+        const std::uint32_t root = o.sets.flat_root(k);
+        ++o.tally[root];
+        whole_clusters =
+            whole_clusters && (o.root_part[root] == kNoMember || o.root_part[root] == p);
+        o.root_part[root] = std::uint32_t(p);
+      }
+    for (std::size_t p = 0; p < o.used; ++p)
+      for (std::uint32_t k : o.parts[p].members) {
+        const std::uint32_t root = o.sets.flat_root(k);
+        whole_clusters =
+            whole_clusters && (o.tally[root] == 0 || o.tally[root] == o.cluster_size[root]);
+        o.tally[root] = 0;
+        o.root_part[root] = kNoMember;
+      }
+  }
+  if (whole_clusters) {
+    for (std::size_t row = 0; row < o.rows; ++row) {
+      const std::uint32_t member = o.row_member[row];
+      if (member == OwnSteps::kMixedRow) {
+        for (std::uint32_t q = start[row]; q < start[row + 1]; ++q) {
+          const std::uint32_t p = list[q] < n ? o.part_of[list[q]] : kNoMember;
+          if (p == kNoMember) continue;
+          std::vector<std::uint32_t>& rows = o.parts[p].rows;
+          if (rows.empty() || rows.back() != row) rows.push_back(std::uint32_t(row));
+        }
+      } else if (member != kNoMember && o.part_of[member] != kNoMember) {
+        o.parts[o.part_of[member]].rows.push_back(std::uint32_t(row));
+      }
+    }
+  } else if (!twice) {
+    find_rows(kNoMember);
+  }
   for (std::uint32_t k : o.moving) {
     s.frozen[k] = 1;
     o.aside[s.origin[k]] = 1;
@@ -359,7 +414,8 @@ void LocalStepper::after_own_moves(const std::vector<std::uint32_t>& moved) {
 std::size_t LocalStepper::OwnSteps::bytes() const {
   auto cap = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   std::size_t b = sets.bytes() + cap(rate) + cap(horizon) + cap(most) + cap(least) + cap(part_of) +
-                  cap(moving) + cap(aside) + cap(catching) + cap(moved) + cap(rerate) + cap(parts) +
+                  cap(row_member) + cap(tally) + cap(root_part) + cap(cluster_size) + cap(moving) +
+                  cap(aside) + cap(catching) + cap(moved) + cap(rerate) + cap(parts) +
                   cap(lagging_roots) + cap(mark);
   for (const Part& p : parts) b += cap(p.members) + cap(p.rows);
   return b;

@@ -321,8 +321,15 @@ class LocalStepper {
     std::vector<double> horizon;      // by root: its own step (its fastest member's)
     std::vector<double> most, least;  // by root: its members' largest and smallest lag
     std::vector<std::uint32_t> part_of;  // by state index: its part in this run, or kNoMember
-    std::vector<std::uint32_t> moving;   // state indices of the moving members
-    std::vector<std::uint8_t> aside;     // by sample index: held still in the part running
+    // By row of the lists: a moving member whose cluster holds every moving member of the row
+    // (kNoMember: none; kMixedRow: a frozen grain's row whose moving partners may lie in two),
+    // so that a run finds each part's rows by cluster, not by every pair.
+    std::vector<std::uint32_t> row_member;
+    std::vector<std::uint32_t> cluster_size;      // by root: its moving members
+    std::vector<std::uint32_t> tally, root_part;  // by root, scratch
+    static constexpr std::uint32_t kMixedRow = kNoMember - 1;
+    std::vector<std::uint32_t> moving;  // state indices of the moving members
+    std::vector<std::uint8_t> aside;    // by sample index: held still in the part running
     std::vector<std::pair<double, std::uint32_t>> catching;  // (lag, state index), scratch
     std::vector<std::uint32_t> moved;                        // settle_lags' scratch
     std::vector<std::uint32_t> rerate;  // state indices anchored since the rates were taken
