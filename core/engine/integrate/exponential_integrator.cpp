@@ -91,7 +91,7 @@ class ExponentialIntegrator final : public Integrator {
         continue;
       }
       const double d = s.diameter[k];
-      const double pace = box_pace ? std::min(0.5 * d, box_pace[s.origin[k]]) : 0.5 * d;
+      const double pace = box_pace ? std::min(0.5 * d, box_pace[k]) : 0.5 * d;
       rate[k] = floored_speed(s, k) / pace;
     }
   }
@@ -360,7 +360,7 @@ class ExponentialIntegrator final : public Integrator {
           const double settling = constrained_[i] ? 0.0 : free_settling;
           const double speed = std::sqrt(std::max(v2, settling * settling));
           // speed / (d / 2) is 2 speed / d to the bit: one rounding of the same quotient.
-          const double pace = box_pace ? std::min(0.5 * d, box_pace[s.origin[i]]) : 0.5 * d;
+          const double pace = box_pace ? std::min(0.5 * d, box_pace[i]) : 0.5 * d;
           t.max_radii_per_s = std::max(t.max_radii_per_s, speed / pace);
           const double pushed = free_settling * StepLimit::kPushedSpeedRatio;
           if (v2 > pushed * pushed)
@@ -444,7 +444,7 @@ class ExponentialIntegrator final : public Integrator {
       double pace = 0.5 * s.diameter[k];
       if (touching_[id])
         pace = std::min(carrier_[id], lists.margin_of(k, s.diameter[k]) / lists.margin);
-      if (allowance) pace = std::min(pace, (*allowance)[id]);
+      if (allowance) pace = std::min(pace, (*allowance)[k]);
       rate = std::max(rate, floored_speed(s, k) / (c * pace));
     }
     // With every grain at its own radius's pace no pair can close by more than the pair rule

@@ -75,8 +75,8 @@ struct IntegratorContext {
   // part, so the step counts every moving grain at least at its settling speed (a grain a
   // contact slowed may fall free within the step), not only the unsupported ones.
   bool members_only = false;
-  // Local steps: by sample index, the radius in which each member's box lets it move (its
-  // pace; empty: its own radius, as in the global scheme and without suspension contacts): a
+  // Local steps: by state index, the radius in which each member's box lets it move (its
+  // pace; null: its own radius, as in the global scheme and without suspension contacts): a
   // step lets a member travel crossing_fraction of it. Carried steps (integrator.carried_fraction >
   // 0): also the sample's diameters. Both are owned by the engine.
   bool carried_steps = false;

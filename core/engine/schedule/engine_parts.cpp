@@ -115,8 +115,8 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
   lists.range = 1 + reach + model.skin;
   // Without suspension contacts the members are the few grains at the walls and the bed: their
   // boxes keep their radii, and ten million grains are spared 80 MB.
-  if (local && model.contact && (model.suspension_contacts || carried))
-    allowance.assign(n, HUGE_VAL);
+  paced = local && model.contact && (model.suspension_contacts || carried);
+  if (paced) allowance.assign(state.size(), HUGE_VAL);
 
   const Fluid& fluid = setup.fluid;
   IntegratorContext ctx;
@@ -138,7 +138,7 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
   ctx.members_only = local;
   ctx.carried_steps = carried;
   ctx.sample_diameter = &sample.particles.diameter;
-  ctx.allowance = &allowance;
+  ctx.allowance = paced ? &allowance : nullptr;
   ctx.state = &state;
   drag = ctx.drag;
   integrator = make_integrator(setup.integrator, ctx);
@@ -189,7 +189,7 @@ bool EngineParts::resort_and_rebuild_lists() {
   if (lists.margin_per_grain && !carried && lists.x0.size() == state.size())
     lists.size_margins(state);
   const bool resorted = resort.due(stats.steps);
-  if (resorted) resort.run(state, lists.search, grid, stats.steps);
+  if (resorted) resort.run(state, lists.search, allowance, grid, stats.steps);
   rebuild_lists();
   return resorted;
 }

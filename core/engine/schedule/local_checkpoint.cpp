@@ -119,8 +119,10 @@ void LocalStepper::load(std::istream& in) {
   for (std::size_t l = 0; l < lanes_.size(); ++l) lanes_[l].syncs.assign(std::move(due[l]));
   member_.assign(kind_.size(), kNoMember);
   index_members();
-  if (paced())
+  if (paced()) {
+    e_.allowance.assign(e_.state.size(), HUGE_VAL);
     for (std::size_t k = 0; k < e_.state.size(); ++k) note_allowance(e_.state.origin[k], k);
+  }
   settled_ = std::size_t(std::count(kind_.begin(), kind_.end(), GrainKind::settled));
   e_.forces.stiffness.assign(e_.state.size(), 0.0);
 }

@@ -26,6 +26,7 @@ void LocalStepper::engage(std::uint32_t id, const FreeFlight::Point& p, bool fro
   e_.lists.x0.push_back(p.x);
   e_.lists.y0.push_back(p.y);
   e_.forces.stiffness.push_back(0.0);
+  if (paced()) e_.allowance.push_back(HUGE_VAL);  // noted when wake_around anchors it
   member_[id] = std::uint32_t(k);
   if (own_steps_) {
     at_[id] = kInSync;
@@ -88,7 +89,7 @@ void LocalStepper::note_allowance(std::uint32_t id, std::size_t k) {
   const double r = 0.5 * e_.state.diameter[k];
   const Box& b = boxes_.box(id);
   const double pace = std::max(0.0, 0.5 * (b.x1 - b.x0) - r * (1 + kSkin)) / kAllowance;
-  e_.allowance[id] = e_.state.frozen[k] || std::abs(pace - r) <= 1e-9 * r ? r : pace;
+  e_.allowance[k] = e_.state.frozen[k] || std::abs(pace - r) <= 1e-9 * r ? r : pace;
 }
 
 Box LocalStepper::member_box(std::size_t k) const {
@@ -120,10 +121,12 @@ void LocalStepper::remove_member(std::size_t k) {
       (*v)[k] = (*v)[last];
     e_.state.origin[k] = e_.state.origin[last];
     e_.state.frozen[k] = e_.state.frozen[last];
+    if (paced()) e_.allowance[k] = e_.allowance[last];
     member_track_[k] = member_track_[last];
     member_[e_.state.origin[k]] = std::uint32_t(k);
   }
   e_.state.resize(last);
+  if (paced()) e_.allowance.resize(last);
   member_track_.resize(last);
   if (own_steps_) {
     member_at_[k] = member_at_[last];

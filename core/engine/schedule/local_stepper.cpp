@@ -63,6 +63,7 @@ LocalStepper::LocalStepper(EngineParts& parts) : e_(parts) {
   // The state holds the members only, a few thousand at most: the room it had for every
   // grain (a sixth of the memory at a million particles) goes back.
   e_.state = EngineState{};
+  std::vector<double>().swap(e_.allowance);  // refilled as members engage
   member_track_.clear();
   member_at_.clear();
   e_.forces = ForceAccumulators{};
@@ -307,7 +308,7 @@ void LocalStepper::reanchor_if_used(std::size_t k) {
   const std::uint32_t id = e_.state.origin[k];
   const double dx = e_.state.x[k] - member_track_[k].x;
   const double dy = e_.state.y[k] - member_track_[k].y;
-  const double pace = kReanchor * (paced() ? e_.allowance[id] : 0.5 * e_.state.diameter[k]);
+  const double pace = kReanchor * (paced() ? e_.allowance[k] : 0.5 * e_.state.diameter[k]);
   if (dx * dx + dy * dy <= pace * pace) return;
   wake_.push_back(id);
   ++e_.stats.box_moves;

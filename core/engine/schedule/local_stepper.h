@@ -178,7 +178,7 @@ class LocalStepper {
   Box member_box(std::size_t k) const;
   void note_allowance(std::uint32_t id, std::size_t k);
   // Whether members' boxes have pace radii of their own (EngineParts::allowance).
-  bool paced() const { return !e_.allowance.empty(); }
+  bool paced() const { return e_.paced; }
   // Carried steps: lists rebuilt if stale, then the members' step chosen again (the step reads
   // the lists' pairs and margins).
   void fresh_step();

@@ -7,8 +7,8 @@
 
 namespace sedem {
 
-void ResortTask::run(EngineState& s, std::vector<double>& search, const NeighbourGrid& grid,
-                     std::int64_t step) {
+void ResortTask::run(EngineState& s, std::vector<double>& search, std::vector<double>& pace,
+                     const NeighbourGrid& grid, std::int64_t step) {
   done_at = step;
   const auto& order = grid.order();
   const std::size_t n = s.size();
@@ -21,6 +21,7 @@ void ResortTask::run(EngineState& s, std::vector<double>& search, const Neighbou
   };
   for (auto* v : {&s.x, &s.y, &s.vx, &s.vy, &s.omega, &s.diameter, &s.weight, &search})
     permute(*v, scratch_);
+  if (pace.size() == n) permute(pace, scratch_);
   permute(s.origin, scratch_index_);
   permute(s.frozen, scratch_flag_);
 }

@@ -20,9 +20,10 @@ class ResortTask {
  public:
   static constexpr std::int64_t kPeriod = 16;
   bool due(std::int64_t step) const { return step - done_at >= kPeriod; }
-  // Reorders the state and the search radii (which follow the state's order).
-  void run(EngineState& s, std::vector<double>& search, const NeighbourGrid& grid,
-           std::int64_t step);
+  // Reorders the state and the search radii and pace radii (which follow the state's order;
+  // the pace radii only where there are as many).
+  void run(EngineState& s, std::vector<double>& search, std::vector<double>& pace,
+           const NeighbourGrid& grid, std::int64_t step);
   std::size_t bytes() const;
 
   std::int64_t done_at = 0;  // the step of the last resort (saved in checkpoints)
