@@ -94,6 +94,10 @@ class CandidateLists {
   // local steps, sized by size_margins, or with carried steps (integrator.carried_fraction)
   // margin times its carrier's radius, not its own. Otherwise `margin` radii for every grain.
   bool margin_per_grain = false;
+  // With margins per grain: the lists are stale only when a pair whose moves sum past its
+  // margins is within its search radii (not when any two grains' moves do). Local steps
+  // without carried steps, whose sub-steps' fine grains fell 0.9 % less in a crowd with it.
+  bool check_pairs = false;
   double range = 1;
   // The margin grain i's search radius holds (the interaction range left out).
   double margin_of(std::size_t i, double diameter) const {
@@ -103,6 +107,14 @@ class CandidateLists {
   std::uint64_t grid_rows = 0;  // the rows the last build put in the grid's order
 
  private:
+  struct Near {
+    std::uint32_t particle;
+    double excess;
+  };
+  // moved_beyond_margin's grains that could be in a pair past its margins, up to this many
+  // (more: the lists are rebuilt without looking at their pairs).
+  static constexpr std::size_t kPairsCheckedUpTo = 64;
+  std::vector<Near> near_;
   void build(const NeighbourGrid& grid, std::size_t n, const double* bx, const double* by,
              const double* radius, const std::uint8_t* frozen);
   // extend() for the particles up to n only.

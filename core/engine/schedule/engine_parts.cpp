@@ -112,6 +112,7 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
   // test of sample 5 at 10^5 grains built the lists 29 % less often. Carried steps size them by
   // the carriers.
   lists.margin_per_grain = local && model.contact;
+  lists.check_pairs = lists.margin_per_grain && !carried;
   lists.range = 1 + reach + model.skin;
   // Without suspension contacts the members are the few grains at the walls and the bed: their
   // boxes keep their radii, and ten million grains are spared 80 MB.
