@@ -185,20 +185,29 @@ bool CandidateLists::moved_beyond_margin(const EngineState& s) {
   // an excess of at least minus the largest; few have, where most barely use their margins.
   const double first = top.back();
   near_.clear();
+  double widest = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const double dx = x[i] - x0[i], dy = y[i] - y0[i];
     const double excess = std::sqrt(dx * dx + dy * dy) - 0.99 * margin_of(i, d[i]);
     if (excess < -first) continue;
     if (near_.size() == kPairsCheckedUpTo) return true;
-    near_.push_back({std::uint32_t(i), excess});
+    near_.push_back({std::uint32_t(i), excess, x[i]});
+    widest = std::max(widest, search[i]);
   }
-  for (std::size_t a = 0; a < near_.size(); ++a)
-    for (std::size_t b = a + 1; b < near_.size(); ++b) {
+  // Swept along x: a pair within its search radii is less than the sum of the two apart in x.
+  std::sort(near_.begin(), near_.end(), [](const Near& a, const Near& b) {
+    return a.x < b.x || (a.x == b.x && a.particle < b.particle);
+  });
+  for (std::size_t a = 0; a < near_.size(); ++a) {
+    const std::uint32_t i = near_[a].particle;
+    for (std::size_t b = a + 1; b < near_.size() && near_[b].x - near_[a].x < search[i] + widest;
+         ++b) {
       if (near_[a].excess + near_[b].excess < 0) continue;
-      const std::uint32_t i = near_[a].particle, j = near_[b].particle;
+      const std::uint32_t j = near_[b].particle;
       const double dx = x[i] - x[j], dy = y[i] - y[j], reach = search[i] + search[j];
       if (dx * dx + dy * dy < reach * reach) return true;
     }
+  }
   return false;
 }
 

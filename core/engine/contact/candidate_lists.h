@@ -109,11 +109,11 @@ class CandidateLists {
  private:
   struct Near {
     std::uint32_t particle;
-    double excess;
+    double excess, x;
   };
   // moved_beyond_margin's grains that could be in a pair past its margins, up to this many
   // (more: the lists are rebuilt without looking at their pairs).
-  static constexpr std::size_t kPairsCheckedUpTo = 64;
+  static constexpr std::size_t kPairsCheckedUpTo = 4096;
   std::vector<Near> near_;
   void build(const NeighbourGrid& grid, std::size_t n, const double* bx, const double* by,
              const double* radius, const std::uint8_t* frozen);
