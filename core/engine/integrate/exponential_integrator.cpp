@@ -80,8 +80,7 @@ class ExponentialIntegrator final : public Integrator {
   }
   void own_rates(const EngineState& s, const std::vector<std::uint32_t>* only,
                  std::vector<double>& rate) const override {
-    const double* box_pace =
-        ctx_.allowance && !ctx_.allowance->empty() ? ctx_.allowance->data() : nullptr;
+    const double* box = box_pace();
     rate.resize(s.size());
     const std::size_t count = only ? only->size() : s.size();
     for (std::size_t m = 0; m < count; ++m) {
@@ -90,9 +89,7 @@ class ExponentialIntegrator final : public Integrator {
         rate[k] = 0;
         continue;
       }
-      const double d = s.diameter[k];
-      const double pace = box_pace ? std::min(0.5 * d, box_pace[k]) : 0.5 * d;
-      rate[k] = floored_speed(s, k) / pace;
+      rate[k] = floored_speed(s, k) / pace_radius(s, k, box);
     }
   }
   double step_at_rate(double radii_per_s) const override { return limited(radii_per_s); }
@@ -347,8 +344,7 @@ class ExponentialIntegrator final : public Integrator {
     if (marked)
       for (std::uint32_t p : projection_.participants()) constrained_[p] = 1;
     // Local steps: a member's box may let it travel less than its own radius.
-    const double* box_pace =
-        ctx_.allowance && !ctx_.allowance->empty() ? ctx_.allowance->data() : nullptr;
+    const double* box = box_pace();
     const int threads = from == 0 ? ctx_.threads : 1;  // a few joiners: not worth a thread
     const ThreadSums sums =
         integrate(threads, s.size() - from, sums_, [&](std::size_t k, ThreadSums& t) {
@@ -360,7 +356,7 @@ class ExponentialIntegrator final : public Integrator {
           const double settling = constrained_[i] ? 0.0 : free_settling;
           const double speed = std::sqrt(std::max(v2, settling * settling));
           // speed / (d / 2) is 2 speed / d to the bit: one rounding of the same quotient.
-          const double pace = box_pace ? std::min(0.5 * d, box_pace[i]) : 0.5 * d;
+          const double pace = pace_radius(s, i, box);
           t.max_radii_per_s = std::max(t.max_radii_per_s, speed / pace);
           const double pushed = free_settling * StepLimit::kPushedSpeedRatio;
           if (v2 > pushed * pushed)
@@ -429,8 +425,7 @@ class ExponentialIntegrator final : public Integrator {
   // a pair's closing speed counts both (each may reach it within the step). Needs fresh lists.
   double carried_step(const EngineState& s, std::size_t from) {
     const CandidateLists& lists = *ctx_.lists;
-    const std::vector<double>* allowance =
-        ctx_.allowance && !ctx_.allowance->empty() ? ctx_.allowance : nullptr;
+    const double* box = box_pace();
     const double c = config_.crossing_fraction;
     const std::size_t n = s.size();
     double rate = 0;  // per second: the inverse of the longest step allowed
@@ -444,7 +439,7 @@ class ExponentialIntegrator final : public Integrator {
       double pace = 0.5 * s.diameter[k];
       if (touching_[id])
         pace = std::min(carrier_[id], lists.margin_of(k, s.diameter[k]) / lists.margin);
-      if (allowance) pace = std::min(pace, (*allowance)[k]);
+      if (box) pace = std::min(pace, box[k]);
       rate = std::max(rate, floored_speed(s, k) / (c * pace));
     }
     // With every grain at its own radius's pace no pair can close by more than the pair rule
@@ -492,6 +487,16 @@ class ExponentialIntegrator final : public Integrator {
   // settling speed, which it may gain (0 for a frozen one).
   double closing_speed(const EngineState& s, std::size_t k) const {
     return s.frozen[k] ? 0.0 : std::sqrt(s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k]) + floor_of(s, k);
+  }
+  // Local steps: the members' pace radii by state index (nullptr: each moves at its own radius).
+  const double* box_pace() const {
+    return ctx_.allowance && !ctx_.allowance->empty() ? ctx_.allowance->data() : nullptr;
+  }
+  // The radius member k's step rule counts its travel in: its own, or less where its box allows
+  // less.
+  static double pace_radius(const EngineState& s, std::size_t k, const double* box) {
+    const double r = 0.5 * s.diameter[k];
+    return box ? std::min(r, box[k]) : r;
   }
   double floored_speed(const EngineState& s, std::size_t k) const {
     const double v2 = s.vx[k] * s.vx[k] + s.vy[k] * s.vy[k], floor = floor_of(s, k);

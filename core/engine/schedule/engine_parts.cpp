@@ -116,8 +116,7 @@ EngineParts::EngineParts(const EngineSetup& engine_setup, Sample engine_sample)
   lists.range = 1 + reach + model.skin;
   // Without suspension contacts the members are the few grains at the walls and the bed: their
   // boxes keep their radii, and ten million grains are spared 80 MB.
-  paced = local && model.contact && (model.suspension_contacts || carried);
-  if (paced) allowance.assign(state.size(), HUGE_VAL);
+  paced = local && model.contact && (model.suspension_contacts || carried);  // filled by engage
 
   const Fluid& fluid = setup.fluid;
   IntegratorContext ctx;

@@ -63,7 +63,6 @@ LocalStepper::LocalStepper(EngineParts& parts) : e_(parts) {
   // The state holds the members only, a few thousand at most: the room it had for every
   // grain (a sixth of the memory at a million particles) goes back.
   e_.state = EngineState{};
-  std::vector<double>().swap(e_.allowance);  // refilled as members engage
   member_track_.clear();
   member_at_.clear();
   e_.forces = ForceAccumulators{};
