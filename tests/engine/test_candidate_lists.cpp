@@ -253,6 +253,52 @@ TEST(CandidateLists, WidenedRowsHoldEachClosePairOnceAndReplayFromACheckpoint) {
   EXPECT_EQ(c.lists.rows(), c.state.size());
 }
 
+// Stale by pairs (check_pairs): when the two largest excesses sum past zero, the lists are
+// stale only if a pair whose excesses sum to zero or more is within its search radii now,
+// however many grains moved (a first version rebuilt without looking past 4 096 of them). A
+// lattice of 4 970 grains 100 um apart, each 10 um across with a search radius of 21 um (a
+// margin of 3.2 radii): all move half their margin up, grain 0 three margins to the right, which
+// leaves it 52.6 um from its nearest neighbour (beyond the 42 um of their two radii).
+TEST(CandidateLists, StaleByPairsLooksAtEveryGrainThatMoved) {
+  const double half_width = 3.5e-3, height = 7.2e-3, spacing = 100e-6, d = 10e-6;
+  EngineState state;
+  NeighbourGrid grid;
+  CandidateLists lists;
+  grid.configure(42e-6, 42e-6, half_width, height);
+  lists.configure(1);
+  lists.margin = 3.2;
+  lists.range = 1;
+  for (int row = 0; row < 71; ++row)
+    for (int column = 0; column < 70; ++column) {
+      const std::size_t k = state.size();
+      state.resize(k + 1);
+      state.x[k] = -half_width + 0.5 * spacing + column * spacing;
+      state.y[k] = 0.5 * spacing + row * spacing;
+      state.diameter[k] = d;
+      state.origin[k] = std::uint32_t(k);
+      lists.search.push_back(0.5 * d * (lists.range + lists.margin));
+    }
+  ASSERT_GT(state.size(), 4096u);
+  lists.margin_per_grain = true;
+  lists.check_pairs = true;
+  lists.rebuild(state, grid, false);
+  const double margin = lists.margin_of(0, d);
+  ASSERT_NEAR(margin, 16e-6, 1e-12);
+  for (std::size_t k = 1; k < state.size(); ++k) state.y[k] += 0.5 * margin;
+  state.x[0] += 3 * margin;
+  EXPECT_FALSE(lists.moved_beyond_margin(state));
+  // Its right-hand neighbour 0.9 of its margin towards it instead: 37.6 um apart, and the two
+  // excesses (2.01 and -0.09 margins) sum past zero.
+  state.y[1] -= 0.5 * margin;
+  state.x[1] -= 0.9 * margin;
+  EXPECT_TRUE(lists.moved_beyond_margin(state));
+  // Without the pair check any two such excesses make the lists stale.
+  state.x[1] += 0.9 * margin;
+  state.y[1] += 0.5 * margin;
+  lists.check_pairs = false;
+  EXPECT_TRUE(lists.moved_beyond_margin(state));
+}
+
 TEST(CandidateLists, WideningsThatNameNoParticleOrNoWiderRadiusDoNotFit) {
   CandidateLists lists;
   const std::size_t n = 10;

@@ -181,29 +181,36 @@ bool CandidateLists::moved_beyond_margin(const EngineState& s) {
   if (!own || !check_pairs) return true;
   // The two largest excesses mostly belong to grains far apart: only a pair whose excesses sum
   // to zero or more and that is within its search radii now can have been left out and be in
-  // reach (a pair farther apart is as safe as any the sum rule passes). Each of its grains has
-  // an excess of at least minus the largest; few have, where most barely use their margins.
+  // reach (a pair farther apart is as safe as any the sum rule passes). One of its grains has
+  // used up its own margin (a sum of two negative excesses is negative), the other has an
+  // excess of at least minus the largest: few of either where most barely use their margins.
   const double first = top.back();
   near_.clear();
-  double widest = 0;
+  past_.clear();
+  double widest = 0;  // of those past their margin
   for (std::size_t i = 0; i < n; ++i) {
     const double dx = x[i] - x0[i], dy = y[i] - y0[i];
     const double excess = std::sqrt(dx * dx + dy * dy) - 0.99 * margin_of(i, d[i]);
     if (excess < -first) continue;
-    if (near_.size() == kPairsCheckedUpTo) return true;
     near_.push_back({std::uint32_t(i), excess, x[i]});
+    if (excess < 0) continue;
+    past_.push_back(near_.back());
     widest = std::max(widest, search[i]);
   }
-  // Swept along x: a pair within its search radii is less than the sum of the two apart in x.
-  std::sort(near_.begin(), near_.end(), [](const Near& a, const Near& b) {
+  // Those past their margin along x (a few, where near_ may hold most of the members): each of
+  // the others looks for them within its search radius and the widest of theirs, since a pair
+  // within its search radii is less than the sum of the two apart in x.
+  std::sort(past_.begin(), past_.end(), [](const Near& a, const Near& b) {
     return a.x < b.x || (a.x == b.x && a.particle < b.particle);
   });
-  for (std::size_t a = 0; a < near_.size(); ++a) {
-    const std::uint32_t i = near_[a].particle;
-    for (std::size_t b = a + 1; b < near_.size() && near_[b].x - near_[a].x < search[i] + widest;
-         ++b) {
-      if (near_[a].excess + near_[b].excess < 0) continue;
-      const std::uint32_t j = near_[b].particle;
+  for (const Near& b : near_) {
+    const std::uint32_t j = b.particle;
+    const double window = search[j] + widest;
+    auto a = std::lower_bound(past_.begin(), past_.end(), b.x - window,
+                              [](const Near& p, double at) { return p.x < at; });
+    for (; a != past_.end() && a->x < b.x + window; ++a) {
+      const std::uint32_t i = a->particle;
+      if (i == j || a->excess + b.excess < 0) continue;
       const double dx = x[i] - x[j], dy = y[i] - y[j], reach = search[i] + search[j];
       if (dx * dx + dy * dy < reach * reach) return true;
     }

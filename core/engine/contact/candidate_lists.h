@@ -111,10 +111,9 @@ class CandidateLists {
     std::uint32_t particle;
     double excess, x;
   };
-  // moved_beyond_margin's grains that could be in a pair past its margins, up to this many
-  // (more: the lists are rebuilt without looking at their pairs).
-  static constexpr std::size_t kPairsCheckedUpTo = 4096;
-  std::vector<Near> near_;
+  // moved_beyond_margin's grains that could be in a pair past its margins, and those of them
+  // past their own.
+  std::vector<Near> near_, past_;
   void build(const NeighbourGrid& grid, std::size_t n, const double* bx, const double* by,
              const double* radius, const std::uint8_t* frozen);
   // extend() for the particles up to n only.
