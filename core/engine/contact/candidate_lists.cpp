@@ -182,8 +182,9 @@ bool CandidateLists::moved_beyond_margin(const EngineState& s) {
   // The two largest excesses mostly belong to grains far apart: only a pair whose excesses sum
   // to zero or more and that is within its search radii now can have been left out and be in
   // reach (a pair farther apart is as safe as any the sum rule passes). One of its grains has
-  // used up its own margin (a sum of two negative excesses is negative), the other has an
-  // excess of at least minus the largest: few of either where most barely use their margins.
+  // used up its own margin (a sum of two negative excesses is negative): few have, where most
+  // barely use theirs. The other has an excess of at least minus the largest: where the
+  // largest is large, that may be most of the members.
   const double first = top.back();
   near_.clear();
   past_.clear();
@@ -197,9 +198,9 @@ bool CandidateLists::moved_beyond_margin(const EngineState& s) {
     past_.push_back(near_.back());
     widest = std::max(widest, search[i]);
   }
-  // Those past their margin along x (a few, where near_ may hold most of the members): each of
-  // the others looks for them within its search radius and the widest of theirs, since a pair
-  // within its search radii is less than the sum of the two apart in x.
+  // Those past their margin, along x: each of near_ looks for them within its own search radius
+  // and the widest of theirs (the two grains of a pair within its search radii are less than
+  // the sum of those radii apart in x).
   std::sort(past_.begin(), past_.end(), [](const Near& a, const Near& b) {
     return a.x < b.x || (a.x == b.x && a.particle < b.particle);
   });

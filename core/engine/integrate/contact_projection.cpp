@@ -7,6 +7,7 @@
 #include <istream>
 #include <ostream>
 #include <stdexcept>
+#include <utility>
 
 #include "core/engine/contact/walls.h"
 #include "core/engine/threads_for.h"
@@ -130,12 +131,14 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
       const bool alone = k >= ordered;  // an appended row: its pairs are held nowhere else
       const double ri = 0.5 * d[i];
       const std::uint32_t oi = origin[i];
-      const bool held_i = warm && held[oi];
+      const std::uint8_t held_i = warm ? held[oi] : 0;
       if (!frozen[i]) {
         const Walls::Gaps gap = walls.gaps(x[i], y[i], ri);
         const double side = std::max(gap.left, gap.right), bottom = gap.bottom;
-        const double side_force = held_i ? warm_.find(PairHistory::key(oi, kSide)) : 0.0;
-        const double floor_force = held_i ? warm_.find(PairHistory::key(oi, kFloor)) : 0.0;
+        const double side_force =
+            held_i & partner_bit(kSide) ? warm_.find(PairHistory::key(oi, kSide)) : 0.0;
+        const double floor_force =
+            held_i & partner_bit(kFloor) ? warm_.find(PairHistory::key(oi, kFloor)) : 0.0;
         if (side > -kSkin * ri || side_force > 0)
           found.push_back({i, kSide, 0, 0, side_force, 0, 0, false});
         if (bottom > -kSkin * ri || floor_force > 0)
@@ -155,10 +158,12 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
         const double rj = 0.5 * d[j], reach = ri + rj, rmin = std::min(ri, rj);
         const double near = reach + kSkin * rmin;
         double force = 0, tangential = 0;
-        if (held_i && held[origin[j]]) {
+        if ((held_i & partner_bit(origin[j])) && (held[origin[j]] & partner_bit(oi))) {
           const auto key = PairHistory::key(oi, origin[j]);
           force = warm_.find(key);
-          if (friction_) tangential = warm_tangential_.find(key);
+          // A tangential force is kept only with a normal one (keep): most pairs of held
+          // grains touch neither, and look it up no more.
+          if (friction_ && force > 0) tangential = warm_tangential_.find(key);
         }
         if (dist2 < near * near || force > 0)
           found.push_back({i, j, 0, 0, force, 0, 0, false, tangential, -tangential / model_.kt, 0});
@@ -453,9 +458,9 @@ void ContactProjection::keep(const EngineState& s, const std::uint8_t* aside) {
   for (std::uint32_t o : held_list_) held_[o] = 0;
   held_list_.clear();
   kept_.clear();
-  auto hold = [&](std::uint32_t o) {
+  auto hold = [&](std::uint32_t o, std::uint32_t partner) {
     if (!held_[o]) held_list_.push_back(o);
-    held_[o] = 1;
+    held_[o] |= partner_bit(partner);
   };
   kept_tangential_.clear();
   for (const Constraint& c : constraints_) {
@@ -464,14 +469,14 @@ void ContactProjection::keep(const EngineState& s, const std::uint8_t* aside) {
     kept_.push_back({PairHistory::key(oa, ob), c.lambda});
     if (friction_ && c.b < kSide && c.lambda_t != 0)
       kept_tangential_.push_back({PairHistory::key(oa, ob), c.lambda_t});
-    hold(oa);
-    if (c.b < kSide) hold(ob);
+    hold(oa, ob);
+    if (c.b < kSide) hold(ob, oa);
   }
   for (const PairHistory::Entry& e : set_aside_) {
     kept_.push_back(e);
-    const std::uint32_t b = std::uint32_t(e.key & 0xFFFFFFFFu);
-    hold(std::uint32_t(e.key >> 32));
-    if (!is_wall(b)) hold(b);
+    const std::uint32_t a = std::uint32_t(e.key >> 32), b = std::uint32_t(e.key & 0xFFFFFFFFu);
+    hold(a, b);
+    if (!is_wall(b)) hold(b, a);
   }
   kept_tangential_.insert(kept_tangential_.end(), set_aside_tangential_.begin(),
                           set_aside_tangential_.end());
@@ -500,11 +505,11 @@ ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid
     held_.assign(n, 0);
     held_list_.clear();
     for (const auto& e : warm_.sorted_entries()) {
-      for (std::uint64_t o : {e.key >> 32, e.key & 0xFFFFFFFFu}) {
-        if (o < n && !held_[o]) {
-          held_[o] = 1;
-          held_list_.push_back(std::uint32_t(o));
-        }
+      const std::uint32_t a = std::uint32_t(e.key >> 32), b = std::uint32_t(e.key & 0xFFFFFFFFu);
+      for (const auto& [o, partner] : {std::pair(a, b), std::pair(b, a)}) {
+        if (o >= n) continue;
+        if (!held_[o]) held_list_.push_back(o);
+        held_[o] |= partner_bit(partner);
       }
     }
   }
