@@ -177,7 +177,7 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
 // Slots for the particles the constraints involve, in order of first appearance, and each
 // slot's constraints in constraint order.
 void ContactProjection::index_participants(const EngineState& s, const std::vector<double>& drag,
-                                           double dt) {
+                                           const std::vector<double>* lost, double dt) {
   const std::size_t n = s.size();
   if (slot_of_.size() != n) slot_of_.assign(n, kNone);
   particle_.clear();
@@ -218,8 +218,10 @@ void ContactProjection::index_participants(const EngineState& s, const std::vect
   moved_y_.assign(slots, 0.0);
   for (std::size_t k = 0; k < slots; ++k) {
     const std::uint32_t p = particle_[k];
-    const Mobility m =
-        s.frozen[p] ? Mobility{} : mobility_of(drag[p], model_.mass(s.diameter[p]), dt);
+    const double mass = model_.mass(s.diameter[p]);
+    const Mobility m = s.frozen[p]           ? Mobility{}
+                       : lost && drag[p] > 0 ? mobility_of(drag[p], mass, dt, (*lost)[p])
+                                             : mobility_of(drag[p], mass, dt);
     mobility_[k] = m.mobility;
     response_[k] = m.response;
   }
@@ -499,7 +501,8 @@ ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid
                                        const CandidateLists& lists, const std::vector<double>& drag,
                                        double dt, const double* start_x, const double* start_y,
                                        const std::uint8_t* aside,
-                                       const std::vector<std::uint32_t>* rows) {
+                                       const std::vector<std::uint32_t>* rows,
+                                       const std::vector<double>* lost) {
   const std::size_t n = std::max(grains_, s.size());
   if (held_.size() != n) {  // first run, or after a checkpoint was loaded
     held_.assign(n, 0);
@@ -515,7 +518,7 @@ ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid
   }
   ProjectionFacts facts;
   collect(s, grid, lists, rows);
-  index_participants(s, drag, dt);
+  index_participants(s, drag, lost, dt);
   if (friction_ && !(start_x && start_y))
     throw std::invalid_argument("contact projection: friction needs the step's start positions");
   start_x_ = start_x;
@@ -563,7 +566,10 @@ ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid
         facts.max_overlap_ratio = std::max(facts.max_overlap_ratio, overlap / ra);
       } else {
         const double rb = 0.5 * d[c.b], rmin = std::min(ra, rb);
-        const double overlap = ra + rb - std::hypot(s.x[c.b] - s.x[c.a], s.y[c.b] - s.y[c.a]);
+        const double dx = s.x[c.b] - s.x[c.a], dy = s.y[c.b] - s.y[c.a];
+        // Not std::hypot: these overlaps are only reported, and its care for over- and
+        // underflow, which no grain's coordinates need, costs a call per constraint.
+        const double overlap = ra + rb - std::sqrt(dx * dx + dy * dy);
         if (overlap > 2 * rmin) facts.blowup.note(s.origin[c.a], "overlap", overlap);
         facts.max_overlap_ratio = std::max(facts.max_overlap_ratio, overlap / rmin);
       }

@@ -58,16 +58,26 @@ struct Mobility {
   double mobility = 0, response = 0;
 };
 
-inline Mobility mobility_of(double c, double mass, double dt) {
+// The decay's loss over a step, e^(-dt c / m) - 1 from one call (c > 0); past 40 response times
+// it is -1 to round-off. The free update's and the mobility's, the same bits.
+inline double decay_lost(double c, double mass, double dt) {
+  const double a = dt * (c / mass);
+  return a > 40 ? -1.0 : std::expm1(-a);
+}
+
+// `lost`: decay_lost(c, mass, dt) (unused where c = 0).
+inline Mobility mobility_of(double c, double mass, double dt, double lost) {
   if (c > 0) {
     const double rate = c / mass, a = dt * rate;
-    // decay - 1 from one call; past 40 response times it is -1 to round-off.
-    const double lost = a > 40 ? -1.0 : std::expm1(-a);
     // a + lost = a^2/2 - a^3/6 + ... cancels for small a: its series there.
     const double drift = a < 1e-3 ? a * a * (0.5 - a * (1.0 / 6 - a / 24)) : a + lost;
     return {drift / (rate * c), -lost * rate / drift};
   }
   return {0.5 * dt * dt / mass, 2.0 / dt};
+}
+
+inline Mobility mobility_of(double c, double mass, double dt) {
+  return mobility_of(c, mass, dt, c > 0 ? decay_lost(c, mass, dt) : 0.0);
 }
 
 struct ProjectionFacts {
@@ -82,18 +92,19 @@ class ContactProjection {
   // with local time stepping may exceed the count of particles the state holds.
   void configure(const ForceModel& model, int threads, int sweeps, std::size_t grains);
   // `drag[i]`: the linear drag coefficient particle i had over the step (mobility_of gives its
-  // mobility). Moves (x, y) from their free values and adds the matching velocity change.
-  // With friction (friction()), (start_x, start_y) are the positions at the start of the step
-  // (before the free update), for the tangential motion over it; required.
-  // `aside` (by sample index, or nullptr): grains this run leaves out, held frozen in `s` by the
-  // caller while others take a step of their own (carried sub-steps). The forces of their
-  // pairs that no moving grain of this run is part of stay as the last run left them. `rows`
-  // (ascending, or nullptr: all): the only rows of the lists that hold a pair with a grain
-  // this run moves.
+  // mobility); `lost[i]` (or nullptr): its decay_lost, which the free update computed already.
+  // Moves (x, y) from their free values and adds the matching velocity change. With friction
+  // (friction()), (start_x, start_y) are the positions at the start of the step (before the free
+  // update), for the tangential motion over it; required. `aside` (by sample index, or nullptr):
+  // grains this run leaves out, held frozen in `s` by the caller while others take a step of their
+  // own (carried sub-steps). The forces of their pairs that no moving grain of this run is part of
+  // stay as the last run left them. `rows` (ascending, or nullptr: all): the only rows of the lists
+  // that hold a pair with a grain this run moves.
   ProjectionFacts run(EngineState& s, const NeighbourGrid& grid, const CandidateLists& lists,
                       const std::vector<double>& drag, double dt, const double* start_x = nullptr,
                       const double* start_y = nullptr, const std::uint8_t* aside = nullptr,
-                      const std::vector<std::uint32_t>* rows = nullptr);
+                      const std::vector<std::uint32_t>* rows = nullptr,
+                      const std::vector<double>* lost = nullptr);
   bool friction() const { return friction_; }
   // touching[i] > 0 for every particle in contact after the last run, 0 otherwise (size n).
   void mark_touching(std::vector<double>& touching) const;
@@ -133,7 +144,8 @@ class ContactProjection {
   };
   void collect(const EngineState& s, const NeighbourGrid& grid, const CandidateLists& lists,
                const std::vector<std::uint32_t>* rows);
-  void index_participants(const EngineState& s, const std::vector<double>& drag, double dt);
+  void index_participants(const EngineState& s, const std::vector<double>& drag,
+                          const std::vector<double>* lost, double dt);
   // The tangential force's change of constraint c in a solving sweep (sets c.mt), friction on.
   double friction_change(Constraint& c, const EngineState& s, double dx, double dy, double dist,
                          double share_a, double share_b);

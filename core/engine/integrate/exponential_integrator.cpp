@@ -138,7 +138,8 @@ class ExponentialIntegrator final : public Integrator {
   }
   std::size_t bytes() const override {
     return projection_.bytes() +
-           (drag_.capacity() + start_x_.capacity() + start_y_.capacity() + carrier_.capacity()) *
+           (drag_.capacity() + lost_.capacity() + start_x_.capacity() + start_y_.capacity() +
+            carrier_.capacity()) *
                8 +
            carrying_.bytes() + carried_ids_.capacity() * 4 + touching_.capacity() +
            still_.capacity() + largest_.capacity() * 8 + in_fast_.capacity() + aside_.capacity() +
@@ -162,7 +163,10 @@ class ExponentialIntegrator final : public Integrator {
     const bool project = m.contact && !m.contact_forces && ctx_.grid && ctx_.lists;
     // Without the force pass a free particle feels only weight, buoyancy and drag.
     const bool pass_forces = needs_force_pass(m);
-    if (project) drag_.resize(s.size());
+    if (project) {
+      drag_.resize(s.size());
+      lost_.resize(s.size());
+    }
     // Friction needs the tangential motion over the step: the positions before it.
     const bool friction = project && projection_.friction();
     if (friction) {
@@ -186,9 +190,9 @@ class ExponentialIntegrator final : public Integrator {
           const double fy = pass_forces ? f.fy[i] : m.gravity_force(d);
           if (project) drag_[i] = c;
           if (c > 0) {
-            const double rate = c / mass, a = dt * rate;
-            // decay - 1 from one call; past 40 response times it is -1 to round-off.
-            const double lost = a > 40 ? -1.0 : std::expm1(-a);
+            const double rate = c / mass;
+            const double lost = decay_lost(c, mass, dt);
+            if (project) lost_[i] = lost;  // the projection's mobility needs it too
             const double decay = 1.0 + lost;
             const double relax = -lost / rate;      // integral of the decay over dt
             const double ux = fx / c, uy = fy / c;  // velocity the step tends to
@@ -210,7 +214,7 @@ class ExponentialIntegrator final : public Integrator {
     if (project && dt > 0) {
       facts = projection_.run(s, *ctx_.grid, *ctx_.lists, drag_, dt,
                               friction ? start_x_.data() : nullptr,
-                              friction ? start_y_.data() : nullptr, aside, rows);
+                              friction ? start_y_.data() : nullptr, aside, rows, &lost_);
       if (facts.blowup.found && !blowup.found) blowup = facts.blowup;
       Blowup moved;
       for (std::uint32_t p : projection_.participants())
@@ -522,6 +526,7 @@ class ExponentialIntegrator final : public Integrator {
   std::vector<std::uint8_t> touching_;  // by sample index: in carried_ids_
   std::vector<std::uint8_t> still_;     // find_carriers' scratch, by sample index: frozen
   std::vector<double> drag_;            // per particle: its drag coefficient over this step
+  std::vector<double> lost_;            // and its decay_lost, where the drag is not 0
   std::vector<std::uint8_t> constrained_;  // per particle, zero between steps
   ProjectionFacts facts_;
   double step_ = 0, ceiling_ = 0;
