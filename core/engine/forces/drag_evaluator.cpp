@@ -6,7 +6,8 @@
 
 namespace sedem {
 
-double DragEvaluator::coefficient(double d, double weight, double speed, double x, double y) const {
+double DragEvaluator::coefficient(double d, double weight, double speed, double x, double y,
+                                  DragMemo* memo, std::uint32_t grain) const {
   switch (model->drag) {
     case DragLaw::off:
       return 0;
@@ -20,9 +21,17 @@ double DragEvaluator::coefficient(double d, double weight, double speed, double 
       const std::size_t cell = voidage->cell(x, y);
       double eps, log_eps, power;
       if (model->voidage_excludes_self && weight > 0) {
-        eps = voidage->excluding(cell, weight * model->volume(d));
-        log_eps = std::log(eps);
-        power = std::exp(-1.7 * log_eps);
+        const double solid = voidage->solid()[cell];
+        if (memo && memo->grain == grain && memo->cell == cell && memo->solid == solid) {
+          eps = memo->eps;
+          log_eps = memo->log_eps;
+          power = memo->power;
+        } else {
+          eps = voidage->excluding(cell, weight * model->volume(d));
+          log_eps = std::log(eps);
+          power = std::exp(-1.7 * log_eps);
+          if (memo) *memo = {grain, std::uint32_t(cell), solid, eps, log_eps, power};
+        }
       } else {
         eps = voidage->voidage(cell);
         log_eps = voidage->log_voidage(cell);

@@ -137,7 +137,7 @@ class ExponentialIntegrator final : public Integrator {
     if (carried_) find_carriers(*ctx_.state);  // the state is loaded first
   }
   std::size_t bytes() const override {
-    return projection_.bytes() +
+    return projection_.bytes() + drag_memo_.capacity() * sizeof(DragMemo) +
            (drag_.capacity() + lost_.capacity() + start_x_.capacity() + start_y_.capacity() +
             carrier_.capacity()) *
                8 +
@@ -167,6 +167,8 @@ class ExponentialIntegrator final : public Integrator {
       drag_.resize(s.size());
       lost_.resize(s.size());
     }
+    const bool memo = m.drag == DragLaw::di_felice && m.voidage_excludes_self;
+    if (memo) drag_memo_.resize(s.size());
     // Friction needs the tangential motion over the step: the positions before it.
     const bool friction = project && projection_.friction();
     if (friction) {
@@ -183,8 +185,8 @@ class ExponentialIntegrator final : public Integrator {
           const double d = s.diameter[i];
           const double mass = m.mass(d);
           const double vx = s.vx[i], vy = s.vy[i];
-          double c =
-              ctx_.drag.coefficient(d, s.weight[i], std::sqrt(vx * vx + vy * vy), s.x[i], s.y[i]);
+          double c = ctx_.drag.coefficient(d, s.weight[i], std::sqrt(vx * vx + vy * vy), s.x[i],
+                                           s.y[i], memo ? &drag_memo_[i] : nullptr, s.origin[i]);
           if (pass_forces) c += f.lubrication_stiffness[i] * dt;
           const double fx = pass_forces ? f.fx[i] : 0.0;
           const double fy = pass_forces ? f.fy[i] : m.gravity_force(d);
@@ -527,6 +529,7 @@ class ExponentialIntegrator final : public Integrator {
   std::vector<std::uint8_t> still_;     // find_carriers' scratch, by sample index: frozen
   std::vector<double> drag_;            // per particle: its drag coefficient over this step
   std::vector<double> lost_;            // and its decay_lost, where the drag is not 0
+  std::vector<DragMemo> drag_memo_;     // per particle: what its last drag found in its cell
   std::vector<std::uint8_t> constrained_;  // per particle, zero between steps
   ProjectionFacts facts_;
   double step_ = 0, ceiling_ = 0;
