@@ -24,6 +24,39 @@ constexpr double kSkin = 0.5;
 // ~10 ns per constraint it shares, the more so on a loaded machine.
 constexpr std::size_t kParallelFrom = std::size_t(1) << 15;
 
+// The last step's forces in the order keep() stored them: the order collect meets them again
+// while the lists stand (the same rows, the same partners). The next one is where the cursor
+// is, a sequential read where the table's lookup is a cache miss; anything else (the lists
+// rebuilt or re-sorted, a pair that held no force, another thread's rows) is looked up in the
+// table, which holds the same entries: the same values either way.
+class WarmCursor {
+ public:
+  WarmCursor(const std::vector<PairHistory::Entry>& order, const PairHistory& table, bool use)
+      : next_(order.data()),
+        end_(use ? order.data() + order.size() : order.data()),
+        table_(table) {}
+  double find(std::uint64_t key) {
+    if (next_ < end_ && next_->key == key) return (next_++)->spring;
+    const double force = table_.find(key);
+    // Found out of order: a pair or a few that held a force and are not met again (a row this
+    // run does not scan, a pair now beyond its lists) are skipped; a larger change waits for
+    // the next step, whose order this step's forces set.
+    if (force != 0)
+      for (const PairHistory::Entry* e = next_; e < end_ && e < next_ + kLookAhead; ++e)
+        if (e->key == key) {
+          next_ = e + 1;
+          break;
+        }
+    return force;
+  }
+
+ private:
+  static constexpr std::ptrdiff_t kLookAhead = 8;
+  const PairHistory::Entry* next_;
+  const PairHistory::Entry* end_;
+  const PairHistory& table_;
+};
+
 }  // namespace
 
 void ContactProjection::configure(const ForceModel& model, int threads, int sweeps,
@@ -124,6 +157,10 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
     const std::size_t t = std::size_t(omp_get_thread_num());
     auto& found = found_[t];
     found.clear();
+    // The first thread's rows come first, as they did at the last step; the others' start
+    // somewhere in the order, which the table does not say: they look every force up.
+    WarmCursor held_normal(kept_, warm_, t == 0);
+    WarmCursor held_tangential(kept_tangential_, warm_tangential_, t == 0);
 #pragma omp for schedule(static)
     for (std::size_t r = 0; r < scanned; ++r) {
       const std::size_t k = rows ? (*rows)[r] : r;
@@ -136,9 +173,9 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
         const Walls::Gaps gap = walls.gaps(x[i], y[i], ri);
         const double side = std::max(gap.left, gap.right), bottom = gap.bottom;
         const double side_force =
-            held_i & partner_bit(kSide) ? warm_.find(PairHistory::key(oi, kSide)) : 0.0;
+            held_i & partner_bit(kSide) ? held_normal.find(PairHistory::key(oi, kSide)) : 0.0;
         const double floor_force =
-            held_i & partner_bit(kFloor) ? warm_.find(PairHistory::key(oi, kFloor)) : 0.0;
+            held_i & partner_bit(kFloor) ? held_normal.find(PairHistory::key(oi, kFloor)) : 0.0;
         if (side > -kSkin * ri || side_force > 0)
           found.push_back({i, kSide, 0, 0, side_force, 0, 0, false});
         if (bottom > -kSkin * ri || floor_force > 0)
@@ -160,10 +197,10 @@ void ContactProjection::collect(const EngineState& s, const NeighbourGrid& grid,
         double force = 0, tangential = 0;
         if ((held_i & partner_bit(origin[j])) && (held[origin[j]] & partner_bit(oi))) {
           const auto key = PairHistory::key(oi, origin[j]);
-          force = warm_.find(key);
+          force = held_normal.find(key);
           // A tangential force is kept only with a normal one (keep): most pairs of held
           // grains touch neither, and look it up no more.
-          if (friction_ && force > 0) tangential = warm_tangential_.find(key);
+          if (friction_ && force > 0) tangential = held_tangential.find(key);
         }
         if (dist2 < near * near || force > 0)
           found.push_back({i, j, 0, 0, force, 0, 0, false, tangential, -tangential / model_.kt, 0});

@@ -198,6 +198,8 @@ class ContactProjection {
     return std::uint8_t(1u << ((partner * 0x9E3779B1u) >> 29));
   }
   std::vector<std::uint32_t> held_list_;
+  // The forces held at the end of the last step, in the constraints' order (then those set
+  // aside): collect reads them in that order where it can (WarmCursor), and warm_ otherwise.
   std::vector<PairHistory::Entry> kept_;
   PairHistory warm_;  // forces at the end of the last step; walls as partners kSide, kFloor
   PairHistory warm_tangential_;  // friction: the pairs' lambda_t at the end of the last step
