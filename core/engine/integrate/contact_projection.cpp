@@ -41,12 +41,14 @@ class WarmCursor {
     // Found out of order: a pair or a few that held a force and are not met again (a row this
     // run does not scan, a pair now beyond its lists) are skipped; a larger change waits for
     // the next step, whose order this step's forces set.
-    if (force != 0)
-      for (const PairHistory::Entry* e = next_; e < end_ && e < next_ + kLookAhead; ++e)
+    if (force != 0) {
+      const PairHistory::Entry* last = end_ - next_ > kLookAhead ? next_ + kLookAhead : end_;
+      for (const PairHistory::Entry* e = next_; e < last; ++e)
         if (e->key == key) {
           next_ = e + 1;
           break;
         }
+    }
     return force;
   }
 
