@@ -475,6 +475,17 @@ void ContactProjection::sweep(EngineState& s, Mode mode) {
     }
 }
 
+// Each grain of pair `key` (a wall: its grain only) gets the other's bit; a grain beyond the
+// sample (a foreign checkpoint's key) none.
+void ContactProjection::hold_both(std::uint64_t key) {
+  const std::uint32_t a = std::uint32_t(key >> 32), b = std::uint32_t(key & 0xFFFFFFFFu);
+  for (const auto& [o, partner] : {std::pair(a, b), std::pair(b, a)}) {
+    if (o >= held_.size()) continue;  // a wall, as a grain, is beyond every sample
+    if (!held_[o]) held_list_.push_back(o);
+    held_[o] |= partner_bit(partner);
+  }
+}
+
 void ContactProjection::keep(const EngineState& s, const std::uint8_t* aside) {
   const std::uint32_t* origin = s.origin.data();
   // A pair with a grain set aside keeps its force unless a grain moving in this run is part of
@@ -499,10 +510,6 @@ void ContactProjection::keep(const EngineState& s, const std::uint8_t* aside) {
   for (std::uint32_t o : held_list_) held_[o] = 0;
   held_list_.clear();
   kept_.clear();
-  auto hold = [&](std::uint32_t o, std::uint32_t partner) {
-    if (!held_[o]) held_list_.push_back(o);
-    held_[o] |= partner_bit(partner);
-  };
   kept_tangential_.clear();
   for (const Constraint& c : constraints_) {
     if (c.lambda <= 0) continue;
@@ -510,15 +517,9 @@ void ContactProjection::keep(const EngineState& s, const std::uint8_t* aside) {
     kept_.push_back({PairHistory::key(oa, ob), c.lambda});
     if (friction_ && c.b < kSide && c.lambda_t != 0)
       kept_tangential_.push_back({PairHistory::key(oa, ob), c.lambda_t});
-    hold(oa, ob);
-    if (c.b < kSide) hold(ob, oa);
   }
-  for (const PairHistory::Entry& e : set_aside_) {
-    kept_.push_back(e);
-    const std::uint32_t a = std::uint32_t(e.key >> 32), b = std::uint32_t(e.key & 0xFFFFFFFFu);
-    hold(a, b);
-    if (!is_wall(b)) hold(b, a);
-  }
+  kept_.insert(kept_.end(), set_aside_.begin(), set_aside_.end());
+  for (const PairHistory::Entry& e : kept_) hold_both(e.key);
   kept_tangential_.insert(kept_tangential_.end(), set_aside_tangential_.begin(),
                           set_aside_tangential_.end());
   warm_.assign(&kept_, 1);
@@ -546,14 +547,7 @@ ProjectionFacts ContactProjection::run(EngineState& s, const NeighbourGrid& grid
   if (held_.size() != n) {  // first run, or after a checkpoint was loaded
     held_.assign(n, 0);
     held_list_.clear();
-    for (const auto& e : warm_.sorted_entries()) {
-      const std::uint32_t a = std::uint32_t(e.key >> 32), b = std::uint32_t(e.key & 0xFFFFFFFFu);
-      for (const auto& [o, partner] : {std::pair(a, b), std::pair(b, a)}) {
-        if (o >= n) continue;
-        if (!held_[o]) held_list_.push_back(o);
-        held_[o] |= partner_bit(partner);
-      }
-    }
+    for (const PairHistory::Entry& e : kept_) hold_both(e.key);  // kept_ is warm_'s entries
   }
   ProjectionFacts facts;
   collect(s, grid, lists, rows);

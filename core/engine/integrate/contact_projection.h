@@ -197,7 +197,8 @@ class ContactProjection {
   static std::uint8_t partner_bit(std::uint32_t partner) {
     return std::uint8_t(1u << ((partner * 0x9E3779B1u) >> 29));
   }
-  std::vector<std::uint32_t> held_list_;
+  std::vector<std::uint32_t> held_list_;  // the grains whose held_ is not 0
+  void hold_both(std::uint64_t key);
   // The forces held at the end of the last step, in the constraints' order (then those set
   // aside): collect reads them in that order where it can (WarmCursor), and warm_ otherwise.
   std::vector<PairHistory::Entry> kept_;
