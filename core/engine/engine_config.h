@@ -42,6 +42,9 @@ struct IntegratorConfig {
   // steps at its own fastest member's rule, a slow one lagging the common step
   bool own_steps = false;
   double max_coast = 60.0;  // s, longest window of a coasting grain
+  // local steps: the longest travel of a coasting grain's window, in mean spacings (where the
+  // free grains pass each other, no shorter than a voidage cell)
+  double coast_travel = 2.0;
   // local steps: where a member's radius is more than a fiftieth of the mean spacing, its box's
   // pace radius is this many times its travel in the last step over crossing_fraction, if that
   // is less (0: its own radius)

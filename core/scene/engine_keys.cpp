@@ -90,6 +90,12 @@ void describe(IntegratorConfig& c, Schema& s) {
            "exponential with local_steps: the longest window a free grain coasts with its drag "
            "(and the voidage it feels) held constant.")
       .min_exclusive = true;
+  s.number("integrator.coast_travel", &c.coast_travel, "", 1, 0, 1e3,
+           "exponential with local_steps: the longest travel of a free grain's window, in mean "
+           "spacings of the particles (where the free grains pass each other, no less than a "
+           "voidage cell). Longer windows mean fewer looks at each grain; where many grains "
+           "crowd the common step, more of their boxes meet theirs.")
+      .min_exclusive = true;
   s.number("integrator.member_box_steps", &c.member_box_steps, "", 1, 0, 1e6,
            "exponential with local_steps: a grain on the common step holds a box it cannot leave "
            "before it is looked at again, which lets it travel 2 of its radii, and a step moves "

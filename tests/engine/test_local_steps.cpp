@@ -461,9 +461,45 @@ TEST(LocalSteps, WithContactsEverywhereTheMembersStepGivesTheSameBitsOnOneThread
 // where they would be without retirement (Stokes drag: a free grain's path does not depend on
 // its windows), the retired ones lie stacked on the bottom, and a checkpoint taken with
 // retired grains resumes bit for bit.
+// A free grain's window may carry it integrator.coast_travel mean spacings: longer windows
+// take fewer of them, keep the promise after every step (no box meets another), and move the
+// grains that meet nothing along the same exact path, to round-off.
+TEST(LocalSteps, LongerWindowsTakeFewerAndMoveTheFreeGrainsAlike) {
+  Scene scene = scene_with("stokes", "exponential");
+  scene.integrator.local_steps = true;
+  scene.integrator.retire_below = false;
+  const double hw = scene.cylinder.half_width();
+  const auto grains = test::scattered(
+      400, -0.9 * hw, 0.9 * hw, 0.05, 0.45, [](int k) { return k % 2 ? 70e-6 : 20e-6; }, 3, 0.0);
+  std::int64_t windows[2] = {0, 0};
+  Particles end[2];
+  for (int longer : {0, 1}) {
+    scene.integrator.coast_travel = longer ? 2.0 : 0.5;
+    Engine engine(engine_setup(scene), sample_of(grains));
+    for (int k = 1; k <= 30; ++k) {
+      engine.advance_to(k);
+      ASSERT_EQ(engine.local_violation(), "")
+          << "travel " << scene.integrator.coast_travel << ", t = " << k << " s";
+    }
+    windows[longer] = engine.stats().windows;
+    end[longer] = engine.particles();
+  }
+  EXPECT_LT(double(windows[1]), 0.5 * double(windows[0]))
+      << windows[1] << " against " << windows[0];
+  std::size_t alike = 0;
+  for (std::size_t i = 0; i < grains.size(); ++i) {
+    const double gap = std::hypot(end[1].x[i] - end[0].x[i], end[1].y[i] - end[0].y[i]);
+    alike += gap < 1e-9;
+  }
+  EXPECT_GT(alike, grains.size() * 9 / 10) << alike << " of " << grains.size();
+}
+
 TEST(LocalSteps, GrainsBelowEveryInstrumentRetireAndChangeNothingAbove) {
   Scene scene = scene_with("stokes", "exponential");
   scene.integrator.local_steps = true;
+  // A grain retires at its window's end: windows of half a mean spacing (4 mm here, 13 s for a
+  // fine grain) have all ended since the grains crossed the line that are below it at 60 s.
+  scene.integrator.coast_travel = 0.5;
   const double hw = scene.cylinder.half_width();
   const auto grains = test::scattered(
       400, -0.9 * hw, 0.9 * hw, 0.001, 0.45, [](int k) { return k % 2 ? 70e-6 : 20e-6; }, 3, 0.0);

@@ -74,10 +74,12 @@ def near(mask, reach=2):
 
 def masks(picture, loose=False):
     """Coloured and dark pixels; `loose` takes fainter ones too, as a thin line one renderer
-    draws crisp another spreads over two rows of lighter pixels."""
-    colour = picture.max(axis=2) - picture.min(axis=2) > (25 if loose else 60)
-    dark = picture.mean(axis=2) < (200 if loose else 110)
-    return {"coloured": colour, "dark": dark & ~colour}
+    draws crisp another spreads over two rows of lighter pixels. Each loose class holds the
+    strict one: a dark pixel faintly tinted (a dark curve over a translucent band) stays dark."""
+    spread = picture.max(axis=2) - picture.min(axis=2)
+    colour = spread > (25 if loose else 60)
+    dark = (picture.mean(axis=2) < (200 if loose else 110)) & ~(spread > 60)
+    return {"coloured": colour, "dark": dark}
 
 
 def compare(reference, other, what):

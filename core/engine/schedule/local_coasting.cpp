@@ -81,10 +81,13 @@ bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p,
 
   const double speed = f.rate > 0 ? std::max(std::hypot(f.vx, f.vy), terminal)
                                   : std::hypot(f.vx, f.vy) + terminal * window;
-  // A window's box stays within a fraction of the mean spacing: long boxes would crowd the
-  // space the others need for theirs and engage grains that are nowhere near each other.
-  // Without suspension contacts the free grains do not look at it, and the window is
-  // bounded by the voidage grid instead: the drag is taken anew about once per cell crossed.
+  // A window's box stays within integrator.coast_travel mean spacings (2): each window is a
+  // sync, and most of a whole test's time at 10^5 grains went to the syncs at half a spacing,
+  // while boxes much longer would crowd the space the others need for theirs where many grains
+  // meet (at 3x10^5 grains in the first minute, 2 spacings took 1.05 times as long as half a
+  // spacing; docs/results/engine.md, "Longer windows"). Without suspension contacts the free
+  // grains do not look at it, and the window is bounded by the voidage grid instead: the drag
+  // is taken anew about once per cell crossed.
   if (speed > 0) window = std::min(window, travel_ / speed);
   const double shortest =
       speed > 0 ? std::min(window, e_.setup.integrator.crossing_fraction * r / speed) : window;

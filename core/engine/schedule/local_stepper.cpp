@@ -32,9 +32,8 @@ LocalStepper::LocalStepper(EngineParts& parts) : e_(parts) {
   // Cells about twice the mean spacing: a box spans a few of them and each holds a few boxes.
   const double spacing =
       std::sqrt(2 * cyl.half_width() * cyl.height / double(std::max<std::size_t>(n, 1)));
-  travel_ = e_.model.suspension_contacts
-                ? kTravel * spacing
-                : std::max(kTravel * spacing, e_.setup.forces.voidage_cell);
+  const double travel = e_.setup.integrator.coast_travel * spacing;
+  travel_ = e_.model.suspension_contacts ? travel : std::max(travel, e_.setup.forces.voidage_cell);
   registry_cell_ = std::max(spacing, 4 * dmax);
   least_pace_ = kLeastPace * spacing;
   land_y_.assign(n, 0.0);

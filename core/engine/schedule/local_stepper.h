@@ -113,8 +113,6 @@ class LocalStepper {
   static constexpr double kConverged = 1e-3;
   // Response times of a window still converging.
   static constexpr double kResponses = 8.0;
-  // Longest travel of a window, in mean spacings.
-  static constexpr double kTravel = 0.5;
   // Steps between two looks for members that touch nothing (to release them).
   static constexpr std::int64_t kReleaseEvery = 16;
   // Area fraction of the coarse bed (discs packed at random).
