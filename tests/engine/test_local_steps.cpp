@@ -457,10 +457,6 @@ TEST(LocalSteps, WithContactsEverywhereTheMembersStepGivesTheSameBitsOnOneThread
   }
 }
 
-// Grains that fall below every instrument retire onto the coarse bed. Those that stay above are
-// where they would be without retirement (Stokes drag: a free grain's path does not depend on
-// its windows), the retired ones lie stacked on the bottom, and a checkpoint taken with
-// retired grains resumes bit for bit.
 // A free grain's window may carry it integrator.coast_travel mean spacings: longer windows
 // take fewer of them, keep the promise after every step (no box meets another), and move the
 // grains that meet nothing along the same exact path, to round-off.
@@ -494,10 +490,14 @@ TEST(LocalSteps, LongerWindowsTakeFewerAndMoveTheFreeGrainsAlike) {
   EXPECT_GT(alike, grains.size() * 9 / 10) << alike << " of " << grains.size();
 }
 
+// Grains that fall below every instrument retire onto the coarse bed. Those that stay above are
+// where they would be without retirement (Stokes drag: a free grain's path does not depend on
+// its windows), the retired ones lie stacked on the bottom, and a checkpoint taken with
+// retired grains resumes bit for bit.
 TEST(LocalSteps, GrainsBelowEveryInstrumentRetireAndChangeNothingAbove) {
   Scene scene = scene_with("stokes", "exponential");
   scene.integrator.local_steps = true;
-  // A grain retires at its window's end: windows of half a mean spacing (4 mm here, 13 s for a
+  // A grain retires at its window's end: windows of half a mean spacing (4 mm here, 12 s for a
   // fine grain) have all ended since the grains crossed the line that are below it at 60 s.
   scene.integrator.coast_travel = 0.5;
   const double hw = scene.cylinder.half_width();
