@@ -268,10 +268,12 @@ void Engine::load_checkpoint(std::istream& in, const std::string& path) {
           std::streamsize(count * sizeof(PairHistory::Entry)));
   e.springs.assign(&springs, 1);
   const std::uint64_t n = e.sample.particles.size();
-  for (const auto& e : springs)
-    if (e.key != PairHistory::kEmpty &&
-        ((e.key >> 32) >= n || (e.key & 0xffffffffu) >= n || !std::isfinite(e.spring)))
+  for (const auto& e : springs) {
+    if (e.key == PairHistory::kEmpty) continue;
+    const auto [a, b] = PairHistory::grains(e.key);
+    if (a >= n || b >= n || !std::isfinite(e.spring))
       throw std::runtime_error("damaged checkpoint " + path + ": a contact names no particle");
+  }
   e.integrator->load(in);
   if (local_) local_->load(in);
   if (!in) throw std::runtime_error("truncated checkpoint " + path);

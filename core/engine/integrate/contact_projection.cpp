@@ -478,7 +478,7 @@ void ContactProjection::sweep(EngineState& s, Mode mode) {
 // Each grain of pair `key` (a wall: its grain only) gets the other's bit; a grain beyond the
 // sample (a foreign checkpoint's key) none.
 void ContactProjection::hold_both(std::uint64_t key) {
-  const std::uint32_t a = std::uint32_t(key >> 32), b = std::uint32_t(key & 0xFFFFFFFFu);
+  const auto [a, b] = PairHistory::grains(key);
   for (const auto& [o, partner] : {std::pair(a, b), std::pair(b, a)}) {
     if (o >= held_.size()) continue;  // a wall, as a grain, is beyond every sample
     if (!held_[o]) held_list_.push_back(o);
@@ -497,7 +497,7 @@ void ContactProjection::keep(const EngineState& s, const std::uint8_t* aside) {
     for (std::uint32_t p : particle_)
       if (!s.frozen[p]) moving_[origin[p]] = 1;
     auto kept_aside = [&](std::uint64_t key) {
-      const std::uint32_t a = std::uint32_t(key >> 32), b = std::uint32_t(key & 0xFFFFFFFFu);
+      const auto [a, b] = PairHistory::grains(key);
       const bool wall = is_wall(b);
       return (aside[a] || (!wall && aside[b])) && !moving_[a] && (wall || !moving_[b]);
     };

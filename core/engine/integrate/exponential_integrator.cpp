@@ -402,7 +402,7 @@ class ExponentialIntegrator final : public Integrator {
     }
     carried_ids_.clear();
     for (const PairHistory::Entry& e : projection_.held_pairs()) {
-      const std::uint32_t a = std::uint32_t(e.key >> 32), b = std::uint32_t(e.key & 0xFFFFFFFFu);
+      const auto [a, b] = PairHistory::grains(e.key);
       if (ContactProjection::is_wall(b) || a >= d.size() || b >= d.size() || still_[a] || still_[b])
         continue;
       carried_ids_.push_back(a);

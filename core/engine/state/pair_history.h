@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace sedem {
@@ -21,6 +22,10 @@ class PairHistory {
 
   static std::uint64_t key(std::uint32_t a, std::uint32_t b) {
     return a < b ? (std::uint64_t(a) << 32) | b : (std::uint64_t(b) << 32) | a;
+  }
+  // The two of pair `key`, the lesser first (a wall, numbered above every grain, second).
+  static std::pair<std::uint32_t, std::uint32_t> grains(std::uint64_t key) {
+    return {std::uint32_t(key >> 32), std::uint32_t(key & 0xFFFFFFFFu)};
   }
   // The spring of pair `key`, 0 if the pair was not in contact.
   double find(std::uint64_t key) const;
