@@ -45,6 +45,10 @@ struct IntegratorConfig {
   // local steps: the longest travel of a coasting grain's window, in mean spacings (where the
   // free grains pass each other, no shorter than a voidage cell)
   double coast_travel = 2.0;
+  // local steps, Di Felice drag: a coasting grain still far from its terminal velocity keeps
+  // its window past a few response times if its drag at that velocity differs from the one it
+  // holds by at most this fraction (0: its window is always cut)
+  double coast_drag_change = 1e-3;
   // local steps: where a member's radius is more than a fiftieth of the mean spacing, its box's
   // pace radius is this many times its travel in the last step over crossing_fraction, if that
   // is less (0: its own radius)

@@ -96,6 +96,12 @@ void describe(IntegratorConfig& c, Schema& s) {
            "voidage cell). Longer windows mean fewer looks at each grain; where many grains "
            "crowd the common step, more of their boxes meet theirs.")
       .min_exclusive = true;
+  s.number("integrator.coast_drag_change", &c.coast_drag_change, "", 1, 0, 1,
+           "exponential with local_steps and Di Felice drag: a free grain still far from its "
+           "terminal velocity coasts on a window of a few response times, its drag taken anew "
+           "at their end, unless its drag at the terminal velocity differs from the one it holds "
+           "by at most this fraction (a fine grain's drag hardly depends on its speed). 0: the "
+           "window is always cut.");
   s.number("integrator.member_box_steps", &c.member_box_steps, "", 1, 0, 1e6,
            "exponential with local_steps: a grain on the common step holds a box it cannot leave "
            "before it is looked at again, which lets it travel 2 of its radii, and a step moves "

@@ -30,9 +30,16 @@ Box LocalStepper::coasting_disc(double x, double y, double diameter) {
 }
 
 FreeFlight LocalStepper::flight_of(std::uint32_t id, const FreeFlight::Point& p) const {
+  return flight_with(id, p, drag_at(id, p, std::hypot(p.vx, p.vy)));
+}
+
+double LocalStepper::drag_at(std::uint32_t id, const FreeFlight::Point& p, double speed) const {
   const Particles& s = e_.sample.particles;
-  const double d = s.diameter[id], mass = e_.model.mass(d);
-  const double c = e_.drag.coefficient(d, s.weight[id], std::hypot(p.vx, p.vy), p.x, p.y);
+  return e_.drag.coefficient(s.diameter[id], s.weight[id], speed, p.x, p.y);
+}
+
+FreeFlight LocalStepper::flight_with(std::uint32_t id, const FreeFlight::Point& p, double c) const {
+  const double d = e_.sample.particles.diameter[id], mass = e_.model.mass(d);
   FreeFlight f{p.x, p.y, p.vx, p.vy, 0, 0, 0};
   const double force = e_.model.gravity_force(d);
   if (c > 0) {
@@ -44,22 +51,47 @@ FreeFlight LocalStepper::flight_of(std::uint32_t id, const FreeFlight::Point& p)
   return f;
 }
 
+// Grain id at p, still far from its terminal velocity, with flight f: where its drag at the
+// terminal speed f relaxes to is within integrator.coast_drag_change of the drag f holds, f
+// takes the drag at its terminal speed instead, and true. That drag is found by looking at the
+// law again at the speed it gives: each look brings it nearer the fixed point by the drag's
+// slope in the speed (d ln c / d ln v, a few hundredths where the check passes), so the grain
+// settles at its terminal velocity as the global step's would, to about 1e-7 of it.
+bool LocalStepper::relax_drag(std::uint32_t id, const FreeFlight::Point& p, FreeFlight& f) const {
+  const double tolerance = e_.setup.integrator.coast_drag_change;
+  if (tolerance <= 0) return false;
+  const double d = e_.sample.particles.diameter[id];
+  const double held = f.rate * e_.model.mass(d), force = std::abs(e_.model.gravity_force(d));
+  double c = drag_at(id, p, force / held);
+  if (std::abs(c - held) > tolerance * held) return false;
+  c = drag_at(id, p, force / c);
+  f = flight_with(id, p, c);
+  return true;
+}
+
 // The longest window (up to max_coast_s) over which grain id, at p at time t, can coast
 // without its box meeting another or a wall; with `commit`, takes it. False: none as long as
 // its own crossing time (and nothing was changed; `needed`, if given, is then the box of that
 // shortest window).
 bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit,
                          Box* needed, std::uint32_t* blocker) {
-  const FreeFlight f = flight_of(id, p);
+  FreeFlight f = flight_of(id, p);
   const double r = 0.5 * e_.sample.particles.diameter[id], pad = r * (1 + kCoastSkin);
   const double hw = e_.model.half_width;
   Lane& lane = lanes_[lane_of(p.x)];
   double window = e_.setup.integrator.max_coast;
-  const double gap = std::hypot(f.vx - f.ux, f.vy - f.uy), terminal = std::hypot(f.ux, f.uy);
+  const double gap = std::hypot(f.vx - f.ux, f.vy - f.uy);
   // Di Felice drag depends on the speed: far from its terminal velocity a grain's drag is
-  // taken again after a few response times, as the global step would.
-  if (e_.model.drag == DragLaw::di_felice && f.rate > 0 && gap > kConverged * terminal)
+  // taken again after a few response times, as the global step would, unless the drag at the
+  // speed it relaxes to differs from the one it holds by integrator.coast_drag_change or less
+  // (it then coasts with that drag). At a low Reynolds number the drag hardly depends on the
+  // speed (d ln c / d ln v is about 0.13 sqrt(Re)), and a voidage that had changed at their
+  // syncs cut a quarter of sample 5's windows at 10^5 grains to a few response times,
+  // microseconds for a fine grain (docs/results/engine.md, "Windows the drag allows").
+  if (e_.model.drag == DragLaw::di_felice && f.rate > 0 &&
+      gap > kConverged * std::hypot(f.ux, f.uy) && !relax_drag(id, p, f))
     window = std::min(window, kResponses / f.rate);
+  const double terminal = std::hypot(f.ux, f.uy);
   auto box = [&](double w) {
     const FreeFlight::Range g = f.sweep(w);
     return Box{g.x0 - pad, g.x1 + pad, g.y0 - pad, g.y1 + pad};

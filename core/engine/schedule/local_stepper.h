@@ -162,6 +162,9 @@ class LocalStepper {
   void hold_coasting_box(std::uint32_t id, const Box& box);
   static Box coasting_disc(double x, double y, double diameter);
   FreeFlight flight_of(std::uint32_t id, const FreeFlight::Point& p) const;
+  double drag_at(std::uint32_t id, const FreeFlight::Point& p, double speed) const;
+  FreeFlight flight_with(std::uint32_t id, const FreeFlight::Point& p, double c) const;
+  bool relax_drag(std::uint32_t id, const FreeFlight::Point& p, FreeFlight& f) const;
   FreeFlight::Point coasting_at(std::uint32_t id, double t) const;
   // Membership of the common step (local_membership.cpp).
   void engage(std::uint32_t id, const FreeFlight::Point& p, bool frozen);
