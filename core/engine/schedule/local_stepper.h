@@ -17,7 +17,8 @@
 // kCoastSkin). A member's pace radius is its own, or, with carried steps, that of a coarser
 // grain it is held against, or, for a coarse grain at a high count, a few steps' travel
 // (integrator.member_box_steps). A window is chosen so that its box overlaps no other box and
-// no wall; the longest such window up to integrator.max_coast_s, halved until it fits. A grain that
+// no wall; the longest such window up to integrator.max_coast_s, halved until it fits and then
+// bisected between the clear length and the blocked one. A grain that
 // cannot coast even over its own crossing time joins the common step (it is *engaged*), and
 // whatever its box then overlaps joins with it: coasting grains at their exact position now,
 // settled ones as frozen members. Members that touch nothing leave again as soon as a window fits
@@ -113,6 +114,8 @@ class LocalStepper {
   static constexpr double kConverged = 1e-3;
   // Response times of a window still converging.
   static constexpr double kResponses = 8.0;
+  // Looks between a window's clear length and the blocked one twice as long, after halving.
+  static constexpr int kBisections = 3;
   // Steps between two looks for members that touch nothing (to release them).
   static constexpr std::int64_t kReleaseEvery = 16;
   // Area fraction of the coarse bed (discs packed at random).
