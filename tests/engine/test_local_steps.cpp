@@ -541,10 +541,10 @@ TEST(LocalSteps, AGrainWhoseDragHoldsKeepsItsWindow) {
 
 // The same in a hindered suspension of fine grains with a few coarse ones falling through, where
 // the voidage a grain feels changes between its syncs as others cross the cells: with the
-// tolerance far fewer windows (6 834 against 8 855), the promise kept after every second, and
+// tolerance far fewer windows (6 322 against 8 277), the promise kept after every second, and
 // each fine size's mean fall as with every such window cut, to a thousandth (they differed by
-// 6e-5; the coarse grains' collisions make their falls differ by more from any change of the
-// syncs' sequence).
+// 3e-5 and 7e-5; the coarse grains' collisions make their falls differ by more from any change
+// of the syncs' sequence).
 TEST(LocalSteps, WindowsTheDragAllowsAreFewerInAHinderedSuspension) {
   Scene scene = scene_with("di_felice", "exponential");
   scene.integrator.local_steps = true;
