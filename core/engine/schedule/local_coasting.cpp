@@ -124,21 +124,26 @@ bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p,
   const double shortest =
       speed > 0 ? std::min(window, e_.setup.integrator.crossing_fraction * r / speed) : window;
   const Box longest = box(window);
+  // Whether box b meets no wall and none of the boxes of `near`. If not, `in_way` is what
+  // stood in its way (kNoMember: a wall).
+  std::uint32_t in_way = kNoMember;
+  auto clear = [&](std::span<const std::uint32_t> near, const Box& b) {
+    in_way = kNoMember;
+    if (b.x0 <= -hw || b.x1 >= hw || b.y0 <= 0) return false;
+    for (std::uint32_t j : near)
+      if (b.overlaps(boxes_.box(j))) {
+        in_way = j;
+        return false;
+      }
+    return true;
+  };
   // Tries the windows longest first, halving down to the shortest, against the boxes of `near`;
   // true with the first clear one. False: none is, and `in_way` is what stood in the last
-  // (shortest) one's way (kNoMember: a wall).
-  std::uint32_t in_way = kNoMember;
+  // (shortest) one's way.
   auto first_clear = [&](std::span<const std::uint32_t> near, double& clear_w, Box& clear_b) {
     for (double w = window; w >= shortest; w *= 0.5) {
       const Box b = w == window ? longest : box(w);
-      in_way = kNoMember;
-      if (b.x0 <= -hw || b.x1 >= hw || b.y0 <= 0) continue;
-      for (std::uint32_t j : near)
-        if (b.overlaps(boxes_.box(j))) {
-          in_way = j;
-          break;
-        }
-      if (in_way == kNoMember) {
+      if (clear(near, b)) {
         clear_w = w;
         clear_b = b;
         return true;
@@ -172,10 +177,7 @@ bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p,
       for (int k = 0; k < kBisections; ++k) {
         const double mid = 0.5 * (w + blocked);
         const Box m = box(mid);
-        bool clear = m.x0 > -hw && m.x1 < hw && m.y0 > 0;
-        for (std::size_t q = 0; clear && q < lane.near.size(); ++q)
-          clear = !m.overlaps(boxes_.box(lane.near[q]));
-        if (clear) {
+        if (clear(lane.near, m)) {
           w = mid;
           b = m;
         } else {
