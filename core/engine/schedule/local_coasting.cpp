@@ -29,13 +29,17 @@ Box LocalStepper::coasting_disc(double x, double y, double diameter) {
   return Box{x - pad, x + pad, y - pad, y + pad};
 }
 
-FreeFlight LocalStepper::flight_of(std::uint32_t id, const FreeFlight::Point& p) const {
-  return flight_with(id, p, drag_at(id, p, std::hypot(p.vx, p.vy)));
+FreeFlight LocalStepper::flight_of(std::uint32_t id, const FreeFlight::Point& p,
+                                   DragMemo* memo) const {
+  return flight_with(id, p, drag_at(id, p, std::hypot(p.vx, p.vy), memo));
 }
 
-double LocalStepper::drag_at(std::uint32_t id, const FreeFlight::Point& p, double speed) const {
+// `memo` (or nullptr): the grain's voidage found by an earlier look at the same point, read
+// instead of its log and exponential where the cell's solids have not changed (the same bits).
+double LocalStepper::drag_at(std::uint32_t id, const FreeFlight::Point& p, double speed,
+                             DragMemo* memo) const {
   const Particles& s = e_.sample.particles;
-  return e_.drag.coefficient(s.diameter[id], s.weight[id], speed, p.x, p.y);
+  return e_.drag.coefficient(s.diameter[id], s.weight[id], speed, p.x, p.y, memo, id);
 }
 
 FreeFlight LocalStepper::flight_with(std::uint32_t id, const FreeFlight::Point& p, double c) const {
@@ -57,14 +61,15 @@ FreeFlight LocalStepper::flight_with(std::uint32_t id, const FreeFlight::Point& 
 // law again at the speed it gives: each look brings it nearer the fixed point by the drag's
 // slope in the speed (d ln c / d ln v, a few hundredths where the check passes), so the grain
 // settles at its terminal velocity as the global step's would, to about 1e-7 of it.
-bool LocalStepper::relax_drag(std::uint32_t id, const FreeFlight::Point& p, FreeFlight& f) const {
+bool LocalStepper::relax_drag(std::uint32_t id, const FreeFlight::Point& p, FreeFlight& f,
+                              DragMemo* memo) const {
   const double tolerance = e_.setup.integrator.coast_drag_change;
   if (tolerance <= 0) return false;
   const double d = e_.sample.particles.diameter[id];
   const double held = f.rate * e_.model.mass(d), force = std::abs(e_.model.gravity_force(d));
-  double c = drag_at(id, p, force / held);
+  double c = drag_at(id, p, force / held, memo);
   if (std::abs(c - held) > tolerance * held) return false;
-  c = drag_at(id, p, force / c);
+  c = drag_at(id, p, force / c, memo);
   f = flight_with(id, p, c);
   return true;
 }
@@ -75,7 +80,9 @@ bool LocalStepper::relax_drag(std::uint32_t id, const FreeFlight::Point& p, Free
 // shortest window).
 bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p, bool commit,
                          Box* needed, std::uint32_t* blocker) {
-  FreeFlight f = flight_of(id, p);
+  // The drag is looked at up to three times at p (relax_drag): the voidage once.
+  DragMemo memo;
+  FreeFlight f = flight_of(id, p, &memo);
   const double r = 0.5 * e_.sample.particles.diameter[id], pad = r * (1 + kCoastSkin);
   const double hw = e_.model.half_width;
   Lane& lane = lanes_[lane_of(p.x)];
@@ -89,7 +96,7 @@ bool LocalStepper::coast(std::uint32_t id, double t, const FreeFlight::Point& p,
   // syncs cut a quarter of sample 5's windows at 10^5 grains to a few response times,
   // microseconds for a fine grain (docs/results/engine.md, "Windows the drag allows").
   if (e_.model.drag == DragLaw::di_felice && f.rate > 0 &&
-      gap > kConverged * std::hypot(f.ux, f.uy) && !relax_drag(id, p, f))
+      gap > kConverged * std::hypot(f.ux, f.uy) && !relax_drag(id, p, f, &memo))
     window = std::min(window, kResponses / f.rate);
   const double terminal = std::hypot(f.ux, f.uy);
   auto box = [&](double w) {

@@ -58,6 +58,7 @@
 #include <vector>
 
 #include "core/engine/contact/box_registry.h"
+#include "core/engine/forces/drag_evaluator.h"
 #include "core/engine/integrate/free_flight.h"
 #include "core/engine/schedule/engine_parts.h"
 #include "core/engine/schedule/grain_kind.h"
@@ -164,10 +165,13 @@ class LocalStepper {
   bool passes(std::uint32_t j) const;
   void hold_coasting_box(std::uint32_t id, const Box& box);
   static Box coasting_disc(double x, double y, double diameter);
-  FreeFlight flight_of(std::uint32_t id, const FreeFlight::Point& p) const;
-  double drag_at(std::uint32_t id, const FreeFlight::Point& p, double speed) const;
+  FreeFlight flight_of(std::uint32_t id, const FreeFlight::Point& p,
+                       DragMemo* memo = nullptr) const;
+  double drag_at(std::uint32_t id, const FreeFlight::Point& p, double speed,
+                 DragMemo* memo = nullptr) const;
   FreeFlight flight_with(std::uint32_t id, const FreeFlight::Point& p, double c) const;
-  bool relax_drag(std::uint32_t id, const FreeFlight::Point& p, FreeFlight& f) const;
+  bool relax_drag(std::uint32_t id, const FreeFlight::Point& p, FreeFlight& f,
+                  DragMemo* memo) const;
   FreeFlight::Point coasting_at(std::uint32_t id, double t) const;
   // Membership of the common step (local_membership.cpp).
   void engage(std::uint32_t id, const FreeFlight::Point& p, bool frozen);
