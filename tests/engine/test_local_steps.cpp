@@ -83,29 +83,23 @@ TEST(BoxRegistry, ReportsEachOverlapOnceAndForgetsClearedBoxes) {
   EXPECT_EQ(count, 0);
 }
 
-// Many boxes in few cells (a cell keeps its first grains in itself, the rest apart): after
-// random moves and clears every query reports exactly the boxes a brute-force look finds.
-TEST(BoxRegistry, CrowdedCellsReportWhatABruteForceLookFinds) {
-  constexpr std::uint32_t n = 200;
-  BoxRegistry r;
-  r.configure(1e-3, 2e-3, 3e-3, n);  // 4 x 3 cells
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<double> x(-2e-3, 2e-3), y(0, 3e-3), size(1e-5, 8e-4);
-  auto random_box = [&] {
-    const double x0 = x(rng), y0 = y(rng);
-    return Box{x0, x0 + size(rng), y0, y0 + size(rng)};
-  };
+// Sets and clears boxes of n grains at random (one move in `clear_one_in` a clear) over `rounds`
+// moves, and after every `query_every`-th compares a random query's report with a brute-force
+// look through the boxes held.
+template <class RandomBox>
+void expect_queries_as_brute_force(BoxRegistry& r, std::uint32_t n, int rounds, int clear_one_in,
+                                   int query_every, std::mt19937& rng, RandomBox&& random_box) {
   std::vector<bool> held(n, false);
-  for (int round = 0; round < 3000; ++round) {
+  for (int round = 0; round < rounds; ++round) {
     const std::uint32_t id = rng() % n;
-    if (rng() % 5 == 0) {
+    if (rng() % clear_one_in == 0) {
       r.clear(id);
       held[id] = false;
     } else {
       r.set(id, random_box(), 0);
       held[id] = true;
     }
-    if (round % 10 != 0) continue;
+    if (round % query_every != 0) continue;
     const Box q = random_box();
     std::vector<std::uint32_t> found, expected;
     r.overlapping(q, n, [&](std::uint32_t j) { found.push_back(j); });
@@ -114,6 +108,36 @@ TEST(BoxRegistry, CrowdedCellsReportWhatABruteForceLookFinds) {
     std::sort(found.begin(), found.end());
     ASSERT_EQ(found, expected) << "round " << round;
   }
+}
+
+// Many boxes in few cells (a cell keeps its first grains in itself, the rest apart): after
+// random moves and clears every query reports exactly the boxes a brute-force look finds.
+TEST(BoxRegistry, CrowdedCellsReportWhatABruteForceLookFinds) {
+  constexpr std::uint32_t n = 200;
+  BoxRegistry r;
+  r.configure(1e-3, 2e-3, 3e-3, n);  // 4 x 3 cells
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> x(-2e-3, 2e-3), y(0, 3e-3), size(1e-5, 8e-4);
+  expect_queries_as_brute_force(r, n, 3000, 5, 10, rng, [&] {
+    const double x0 = x(rng), y0 = y(rng);
+    return Box{x0, x0 + size(rng), y0, y0 + size(rng)};
+  });
+}
+
+// A tall registry whose boxes sit in a few rows (a query skips the rows holding none): after
+// boxes move between rows, leave them and come back, every query reports exactly the boxes a
+// brute-force look finds.
+TEST(BoxRegistry, SparseRowsReportWhatABruteForceLookFinds) {
+  constexpr std::uint32_t n = 40;
+  BoxRegistry r;
+  r.configure(1e-3, 2e-3, 0.1, n);  // 4 x 100 cells
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> x(-2e-3, 2e-3), size(1e-5, 1.5e-3);
+  std::uniform_int_distribution<int> band(0, 3);
+  expect_queries_as_brute_force(r, n, 4000, 3, 5, rng, [&] {
+    const double x0 = x(rng), y0 = 0.02 * band(rng) + 1e-3 * x(rng) + 2e-3;
+    return Box{x0, x0 + size(rng), y0, y0 + size(rng)};
+  });
 }
 
 // Stokes drag and grains too far apart to meet: coasting is exact, so local steps put every

@@ -11,6 +11,7 @@ void BoxRegistry::configure(double cell, double half_width, double height, std::
   columns_ = std::max(1L, long(std::ceil(2 * half_width / cell)));
   rows_ = std::max(1L, long(std::ceil(height / cell)));
   cells_.assign(std::size_t(columns_ * rows_), {});
+  row_entries_.assign(std::size_t(rows_), 0);
   box_.assign(grains, Box{});
   kind_.assign(grains, kNone);
 }
@@ -18,15 +19,19 @@ void BoxRegistry::configure(double cell, double half_width, double height, std::
 void BoxRegistry::insert(std::uint32_t id) {
   long c0, c1, r0, r1;
   span(box_[id], c0, c1, r0, r1);
-  for (long r = r0; r <= r1; ++r)
+  for (long r = r0; r <= r1; ++r) {
+    row_entries_[std::size_t(r)] += std::uint32_t(c1 - c0 + 1);
     for (long c = c0; c <= c1; ++c) cells_[std::size_t(r * columns_ + c)].push_back(id);
+  }
 }
 
 void BoxRegistry::erase(std::uint32_t id) {
   long c0, c1, r0, r1;
   span(box_[id], c0, c1, r0, r1);
-  for (long r = r0; r <= r1; ++r)
+  for (long r = r0; r <= r1; ++r) {
+    row_entries_[std::size_t(r)] -= std::uint32_t(c1 - c0 + 1);
     for (long c = c0; c <= c1; ++c) cells_[std::size_t(r * columns_ + c)].erase(id);
+  }
 }
 
 void BoxRegistry::set(std::uint32_t id, const Box& box, std::uint8_t kind) {
@@ -53,8 +58,9 @@ void BoxRegistry::clear(std::uint32_t id) {
 }
 
 std::size_t BoxRegistry::bytes() const {
-  std::size_t b =
-      box_.capacity() * sizeof(Box) + kind_.capacity() + cells_.capacity() * sizeof(Cell);
+  std::size_t b = box_.capacity() * sizeof(Box) + kind_.capacity() +
+                  cells_.capacity() * sizeof(Cell) +
+                  row_entries_.capacity() * sizeof(std::uint32_t);
   for (const Cell& c : cells_) b += c.more.capacity() * sizeof(std::uint32_t);
   return b;
 }
